@@ -1,0 +1,83 @@
+#pragma once
+/// Bodies: dynamic and kinematic circles, static and kinematic line segments with rounded caps.
+
+#include "rube/physics/vec2.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace rube {
+
+/// How a body moves: `fixed` never, `kinematic` along a scripted path with infinite mass,
+/// `dynamic` under gravity and impacts with finite mass.
+enum class Motion : std::uint8_t { fixed, kinematic, dynamic };
+
+/// Surface response of a body. A pair's bounciness is the product of both (walls default to 1,
+/// so a ball's own bounciness applies on a plain wall); friction is stored for the later friction model.
+struct Material {
+    double bounciness = 1.0; ///< C in v' = u - C (v - u) (lecture 3): 0 sticks, 1 is perfectly elastic
+    double friction = 0.0;   ///< Coulomb coefficient (not yet used: tangential velocity is kept)
+};
+
+/// One key of a scripted path: the body's offset from where it was placed, at a time in seconds.
+struct PathKey {
+    double time = 0.0;
+    Vec2 offset;
+};
+
+/// A scripted path: offsets at key times, straight lines in between; after the last key it
+/// holds still, or with `loop` starts again from the first key.
+struct KinematicPath {
+    std::vector<PathKey> keys;
+    bool loop = false;
+    /// The offset at time t (seconds since the world started).
+    Vec2 offsetAt(double t) const;
+};
+
+/// A circle. Dynamic circles move under gravity and impacts; kinematic ones follow a path.
+struct Circle {
+    Vec2 position;
+    Vec2 velocity;
+    double radius = 0.5;
+    double inverseMass = 1.0; ///< 0 for kinematic circles: infinite mass (lecture 3, walls)
+    Material material;
+    Motion motion = Motion::dynamic;
+    int path = -1;            ///< index of its KinematicPath, or -1
+    Vec2 origin;              ///< where it was placed: the path's offsets are added to this
+};
+
+/// A two-sided line segment from a to b with rounded line caps of `radius` at both ends.
+/// radius 0 is the lecture's line: the caps are zero-radius circles. A positive radius makes it a
+/// capsule of thickness 2 radius. Static unless it follows a path (kinematic, infinite mass).
+struct Segment {
+    Vec2 a;
+    Vec2 b;
+    Vec2 velocity;            ///< of both endpoints, during the current step (kinematic only)
+    double radius = 0.0;
+    Material material;
+    int path = -1;
+    Vec2 originA, originB;
+    Motion motion() const { return path >= 0 ? Motion::kinematic : Motion::fixed; }
+};
+
+/// What a caller fills in to add a circle; the defaults give a 1 kg dynamic ball of radius 0.5 m.
+struct CircleDef {
+    Vec2 position;
+    Vec2 velocity;
+    double radius = 0.5;
+    double mass = 1.0;        ///< ignored for kinematic circles
+    Material material;
+    Motion motion = Motion::dynamic;
+    int path = -1;
+};
+
+/// What a caller fills in to add a segment; the default is a static line of zero thickness.
+struct SegmentDef {
+    Vec2 a;
+    Vec2 b{1.0, 0.0};
+    double radius = 0.0;
+    Material material;
+    int path = -1;
+};
+
+} // namespace rube

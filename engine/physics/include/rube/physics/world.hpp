@@ -1,0 +1,124 @@
+#pragma once
+/// World: the bodies, the time-step method that advances them, and what happened in each step.
+
+#include "rube/physics/body.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <optional>
+#include <vector>
+
+namespace rube {
+
+/// The time-step methods of the course, each honest about where it fails (see README).
+enum class Method : std::uint8_t {
+    discrete,  ///< fixed step, move everything, push overlaps apart (lecture 5, first method): tunnels when speed x dt > 2r
+    turnBased, ///< bodies move one by one until their first impact (lecture 3): order matters
+    exact,     ///< earliest time of impact over all pairs, resolved one at a time (lecture 3's ideal method)
+    solver,    ///< substepped sequential-impulse contact solver, for piles and resting contact
+};
+
+/// The method's name as scene files and the command line spell it ("turn-based", ...).
+std::string_view methodName(Method);
+/// The method named `name`, or nothing when no method has that name.
+std::optional<Method> methodFromName(std::string_view name);
+
+/// An axis-aligned box; bodies whose centre leaves the world's bounds count as escaped.
+struct Aabb {
+    Vec2 min{-1e6, -1e6};
+    Vec2 max{1e6, 1e6};
+    bool contains(Vec2 p) const { return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y; }
+};
+
+/// Everything that sets up a world; a caller changes only what it needs.
+struct WorldDef {
+    Vec2 gravity{0.0, -9.81};   ///< m/s^2, the same for every dynamic body
+    double timeStep = 1.0 / 60; ///< seconds per step
+    Method method = Method::exact;
+    Aabb bounds;                ///< leaving it is reported as an escape
+    int maxEventsPerStep = 4096; ///< impacts one step may resolve before it gives up (counted as a cap hit)
+    double restingSpeed = 0.0;  ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
+    int substeps = 8;           ///< solver only: substeps per step
+};
+
+/// What kind of thing a circle hit.
+enum class Other : std::uint8_t { circle, segment, segmentCap };
+
+/// One resolved impact: for debugging overlays, game triggers and the trace.
+struct Impact {
+    int circle = -1;            ///< the dynamic circle
+    Other otherKind = Other::circle;
+    int other = -1;             ///< index of the circle or segment it hit
+    double time = 0.0;          ///< world time of the impact, seconds
+    Vec2 pointOfImpact;         ///< where the surfaces touch
+    Vec2 normal;                ///< unit collision normal, pointing from the other body to the circle
+    double approachSpeed = 0.0; ///< normal speed of approach before the resolve, m/s
+};
+
+/// Counters over the world's life, for the summary and the bench.
+struct StepStats {
+    std::int64_t steps = 0;
+    std::int64_t impacts = 0;        ///< impacts resolved
+    std::int64_t restingContacts = 0; ///< impacts treated as resting contact (approach below restingSpeed)
+    std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
+    std::int64_t escapes = 0;        ///< bodies that left the bounds (each counted once)
+    int maxEventsInStep = 0;
+    bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state
+};
+
+class StepMethod;
+
+/// A physics world. Not copyable (it owns its method); movable.
+class World {
+public:
+    explicit World(const WorldDef& def = WorldDef{});
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+
+    /// Adds a circle and returns its index.
+    int addCircle(const CircleDef& def);
+    /// Adds a segment and returns its index.
+    int addSegment(const SegmentDef& def);
+    /// Adds a scripted path for kinematic bodies and returns its index.
+    int addPath(KinematicPath path);
+
+    /// Advances the world by one time step with its method.
+    void step();
+    /// Switches the time-step method (for running any scene under every method).
+    void setMethod(Method method);
+
+    const WorldDef& def() const { return def_; }
+    double time() const { return time_; }
+    const StepStats& stats() const { return stats_; }
+    /// The impacts resolved during the last step, in the order they were resolved.
+    std::span<const Impact> lastImpacts() const { return impacts_; }
+
+    std::span<Circle> circles() { return circles_; }
+    std::span<const Circle> circles() const { return circles_; }
+    std::span<Segment> segments() { return segments_; }
+    std::span<const Segment> segments() const { return segments_; }
+    std::span<const KinematicPath> paths() const { return paths_; }
+
+private:
+    void moveKinematicBodies();
+    void checkState();
+
+    WorldDef def_;
+    std::vector<Circle> circles_;
+    std::vector<Segment> segments_;
+    std::vector<KinematicPath> paths_;
+    std::vector<Impact> impacts_;
+    std::vector<std::uint8_t> escaped_;
+    std::unique_ptr<StepMethod> method_;
+    StepStats stats_;
+    double time_ = 0.0;
+};
+
+/// A 64-bit FNV-1a hash of every body's position and velocity bits: equal hashes mean
+/// bit-identical states (the determinism check, as Box2D's determinism test does).
+std::uint64_t stateHash(const World& world);
+
+} // namespace rube

@@ -1,0 +1,43 @@
+// The determinism hash: FNV-1a over the exact bits of every body's state.
+#include "rube/physics/world.hpp"
+
+#include <bit>
+#include <cstdint>
+
+namespace rube {
+
+namespace {
+
+constexpr std::uint64_t kFnvOffset = 14695981039346656037ull;
+constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+
+void mix(std::uint64_t& h, double value) {
+    // +0.0 and -0.0 hash differently on purpose: bit-identical means bit-identical.
+    std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
+    for (int i = 0; i < 8; ++i) {
+        h ^= bits & 0xffu;
+        h *= kFnvPrime;
+        bits >>= 8;
+    }
+}
+
+} // namespace
+
+std::uint64_t stateHash(const World& world) {
+    std::uint64_t h = kFnvOffset;
+    for (const Circle& c : world.circles()) {
+        mix(h, c.position.x);
+        mix(h, c.position.y);
+        mix(h, c.velocity.x);
+        mix(h, c.velocity.y);
+    }
+    for (const Segment& s : world.segments()) {
+        mix(h, s.a.x);
+        mix(h, s.a.y);
+        mix(h, s.b.x);
+        mix(h, s.b.y);
+    }
+    return h;
+}
+
+} // namespace rube

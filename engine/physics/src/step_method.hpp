@@ -1,0 +1,36 @@
+#pragma once
+// Internal: the one interface every time-step method implements. Not part of the public API.
+
+#include "rube/physics/world.hpp"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace rube {
+
+/// What a method may touch during one step. Kinematic bodies already carry this step's velocity;
+/// a method moves them linearly with it (the world snaps them onto their path afterwards).
+struct StepContext {
+    const WorldDef& def;
+    std::span<Circle> circles;
+    std::span<Segment> segments;
+    double time;                  ///< world time at the start of the step
+    double restingSpeed;          ///< resolved from def.restingSpeed (never 0)
+    std::vector<Impact>& impacts; ///< append every impact resolved, in order
+    StepStats& stats;             ///< add impacts, resting contacts, caps hit; set maxEventsInStep
+};
+
+/// A time-step method: advances every body over dt.
+class StepMethod {
+public:
+    virtual ~StepMethod() = default;
+    virtual void step(StepContext& context, double dt) = 0;
+};
+
+std::unique_ptr<StepMethod> makeDiscreteMethod();
+std::unique_ptr<StepMethod> makeTurnBasedMethod();
+std::unique_ptr<StepMethod> makeExactMethod();
+std::unique_ptr<StepMethod> makeSolverMethod();
+
+} // namespace rube

@@ -1,0 +1,123 @@
+// World: owns the bodies, moves kinematic bodies along their paths, delegates the step to its method.
+#include "rube/physics/world.hpp"
+
+#include "step_method.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rube {
+
+namespace {
+
+std::unique_ptr<StepMethod> makeMethod(Method method) {
+    switch (method) {
+    case Method::discrete: return makeDiscreteMethod();
+    case Method::turnBased: return makeTurnBasedMethod();
+    case Method::exact: return makeExactMethod();
+    case Method::solver: return makeSolverMethod();
+    }
+    throw std::invalid_argument("unknown method");
+}
+
+constexpr std::string_view kMethodNames[] = {"discrete", "turn-based", "exact", "solver"};
+
+} // namespace
+
+std::string_view methodName(Method method) { return kMethodNames[static_cast<int>(method)]; }
+
+std::optional<Method> methodFromName(std::string_view name) {
+    for (int i = 0; i < 4; ++i)
+        if (kMethodNames[i] == name) return static_cast<Method>(i);
+    return std::nullopt;
+}
+
+World::World(const WorldDef& def) : def_(def), method_(makeMethod(def.method)) {}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+int World::addCircle(const CircleDef& d) {
+    Circle c;
+    c.position = d.position;
+    c.origin = d.position;
+    c.velocity = d.motion == Motion::dynamic ? d.velocity : Vec2{};
+    c.radius = d.radius;
+    c.inverseMass = d.motion == Motion::dynamic && d.mass > 0.0 ? 1.0 / d.mass : 0.0;
+    c.material = d.material;
+    c.motion = d.motion;
+    c.path = d.motion == Motion::kinematic ? d.path : -1;
+    if (c.path < 0 && c.motion == Motion::kinematic) c.motion = Motion::fixed;
+    circles_.push_back(c);
+    escaped_.push_back(0);
+    return static_cast<int>(circles_.size()) - 1;
+}
+
+int World::addSegment(const SegmentDef& d) {
+    Segment s;
+    s.a = s.originA = d.a;
+    s.b = s.originB = d.b;
+    s.radius = d.radius;
+    s.material = d.material;
+    s.path = d.path;
+    segments_.push_back(s);
+    return static_cast<int>(segments_.size()) - 1;
+}
+
+int World::addPath(KinematicPath path) {
+    paths_.push_back(std::move(path));
+    return static_cast<int>(paths_.size()) - 1;
+}
+
+void World::setMethod(Method method) {
+    def_.method = method;
+    method_ = makeMethod(method);
+}
+
+// Each kinematic body moves in a straight line during a step, from its path's offset at the
+// start to the offset at the end: v = (offset(t + dt) - offset(t)) / dt.
+void World::moveKinematicBodies() {
+    const double dt = def_.timeStep;
+    for (Circle& c : circles_) {
+        if (c.motion != Motion::kinematic) continue;
+        const KinematicPath& p = paths_[c.path];
+        c.position = c.origin + p.offsetAt(time_);
+        c.velocity = (p.offsetAt(time_ + dt) - p.offsetAt(time_)) / dt;
+    }
+    for (Segment& s : segments_) {
+        if (s.path < 0) continue;
+        const KinematicPath& p = paths_[s.path];
+        const Vec2 offset = p.offsetAt(time_);
+        s.a = s.originA + offset;
+        s.b = s.originB + offset;
+        s.velocity = (p.offsetAt(time_ + dt) - offset) / dt;
+    }
+}
+
+void World::step() {
+    moveKinematicBodies();
+    impacts_.clear();
+    const double dt = def_.timeStep;
+    // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
+    // would register as a fresh impact every step.
+    const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
+    StepContext context{def_, circles_, segments_, time_, resting, impacts_, stats_};
+    method_->step(context, dt);
+    ++stats_.steps;
+    // Integer step count times dt, not a running sum: the clock does not drift over long runs.
+    time_ = static_cast<double>(stats_.steps) * dt;
+    checkState();
+}
+
+void World::checkState() {
+    for (std::size_t i = 0; i < circles_.size(); ++i) {
+        const Circle& c = circles_[i];
+        if (!isFinite(c.position) || !isFinite(c.velocity)) stats_.nonFinite = true;
+        if (!escaped_[i] && !def_.bounds.contains(c.position)) {
+            escaped_[i] = 1;
+            ++stats_.escapes;
+        }
+    }
+}
+
+} // namespace rube

@@ -1,17 +1,43 @@
-// PLACEHOLDER: replaced by the real method. Moves dynamic bodies ballistically, no collisions.
+// The discrete method (lecture 5's first method, lecture 3's fixed time step): move every body over
+// the whole step, then push overlaps apart and reflect. Cheap, and honest about where it fails: a
+// ball tunnels through a line when speed x dt > 2 (r + segment radius), and stacks sink.
+#include "resolve.hpp"
 #include "step_method.hpp"
+
+#include <algorithm>
+#include <vector>
 
 namespace rube {
 namespace {
+
 class DiscreteMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
+        // Where each centre starts: it decides which side of a line a circle is pushed back to.
+        startCentres_.resize(ctx.circles.size());
+        for (std::size_t i = 0; i < ctx.circles.size(); ++i) startCentres_[i] = ctx.circles[i].position;
+
+        // Semi-implicit Euler (lecture 3): velocity first, then position with the new velocity.
         for (Circle& c : ctx.circles) {
             if (c.motion == Motion::dynamic) c.velocity += ctx.def.gravity * dt;
-            c.position += c.velocity * dt;
+            if (c.motion != Motion::fixed) c.position += c.velocity * dt;
         }
+        for (Segment& s : ctx.segments) {
+            if (s.motion() != Motion::kinematic) continue;
+            s.a += s.velocity * dt;
+            s.b += s.velocity * dt;
+        }
+        // "Try to correct overlapping positions, resolve collisions" (lecture 3), all at the end of the step.
+        const int events = separateOverlaps(ctx, startCentres_, dt, ctx.time + dt, true);
+        ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
     }
+
+private:
+    std::vector<Vec2> startCentres_; ///< reused every step: no allocation once grown
 };
+
 } // namespace
+
 std::unique_ptr<StepMethod> makeDiscreteMethod() { return std::make_unique<DiscreteMethod>(); }
+
 } // namespace rube

@@ -1,17 +1,337 @@
-// PLACEHOLDER: replaced by the real method. Moves dynamic bodies ballistically, no collisions.
+// The exact method, lecture 3's ideal time step: find the earliest time of impact over all pairs,
+// move every body to it, resolve only that impact, and continue with the rest of the step.
+// Dynamic bodies move exactly on their parabola p + v t + g t^2 / 2, so times of impact under
+// gravity are roots of a quadratic (line face) or a quartic (circle, line cap).
+// Approaches slower than restingSpeed are resting contact: resolved with C = 0, left out of the
+// search for the rest of the step, and pushed apart at its end. Meant for sparse scenes: every
+// event costs an O(n^2) search, and a pile of many balls is the solver method's job.
+#include "resolve.hpp"
 #include "step_method.hpp"
+
+#include "rube/physics/time_of_impact.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <tuple>
+#include <vector>
 
 namespace rube {
 namespace {
+
+// Passes over the contacts at the end of a step. Ordered from the ground up, one pass settles a
+// stack; more are needed only where a body rests on two others. Stops once nothing overlaps more
+// than kSettledDepth.
+constexpr int kSettlePasses = 16;
+constexpr double kSettledDepth = 1e-12;
+
+// What pairs_ holds per pair: searched, or resting for the rest of the step (and, for a
+// segment, on which side of its line the circle rests).
+enum PairState : std::uint8_t { kSearched = 0, kRestingPlus = 1, kRestingMinus = 2 };
+
+// The earliest impact found so far, and which pair it belongs to.
+struct Candidate {
+    double time = std::numeric_limits<double>::infinity();
+    int circle = -1;
+    Other kind = Other::circle;
+    int other = -1;
+    Vec2 normal;
+};
+
+// A pair touching (or nearly) at the end of a step, to be settled; `side` is a segment face's side.
+struct Contact {
+    int circle = -1;
+    Other kind = Other::circle;
+    int other = -1;
+    Vec2 side;
+    int support = 0; ///< +1: the other holds the circle up against gravity; -1: the reverse; 0: side by side
+};
+
+// A contact supports when its normal has a real component against gravity; a vertical wall does not
+// (with its normal off horizontal only by rounding).
+constexpr double kSupportSine = 1e-6;
+
 class ExactMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
+        circleCount_ = static_cast<int>(ctx.circles.size());
+        columns_ = circleCount_ + static_cast<int>(ctx.segments.size());
+        pairs_.assign(static_cast<std::size_t>(circleCount_) * static_cast<std::size_t>(columns_), kSearched);
+
+        // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
+        // resolve it" (lecture 3). Work is bounded by def.maxEventsPerStep.
+        double elapsed = 0.0;
+        int events = 0;
+        bool capped = false;
+        while (elapsed < dt) {
+            const double horizon = dt - elapsed;
+            const Candidate next = earliestCollision(ctx, horizon);
+            if (next.circle < 0) {
+                advance(ctx, horizon);
+                break;
+            }
+            if (events >= ctx.def.maxEventsPerStep) {
+                // Give up on exactness for the rest of this step; the clean-up keeps it overlap-free.
+                ++ctx.stats.capsHit;
+                capped = true;
+                advance(ctx, horizon);
+                break;
+            }
+            advance(ctx, next.time);
+            elapsed += next.time;
+            resolve(ctx, next, ctx.time + elapsed);
+            ++events;
+        }
+        if (capped) {
+            centres_.resize(ctx.circles.size());
+            for (std::size_t i = 0; i < ctx.circles.size(); ++i) centres_[i] = ctx.circles[i].position;
+            separateOverlaps(ctx, centres_, 0.0, ctx.time + dt, false);
+        }
+        settleContacts(ctx, dt);
+        ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
+    }
+
+private:
+    std::size_t pairIndex(int circle, int column) const {
+        return static_cast<std::size_t>(circle) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
+    }
+    // Columns: circles first, then segments; a pair of circles is stored under its lower index.
+    std::size_t pairIndex(int circle, Other kind, int other) const {
+        if (kind != Other::circle) return pairIndex(circle, circleCount_ + other);
+        return pairIndex(std::min(circle, other), std::max(circle, other));
+    }
+    bool resting(int circle, Other kind, int other) const { return pairs_[pairIndex(circle, kind, other)] != kSearched; }
+
+    // The earliest time of impact over all pairs within the horizon, in index order on ties.
+    Candidate earliestCollision(const StepContext& ctx, double horizon) const {
+        Candidate best;
+        const Vec2 g = ctx.def.gravity;
+        const auto consider = [&](const std::optional<Collision>& hit, int circle, Other kind, int other) {
+            if (hit && hit->timeOfImpact < best.time)
+                best = Candidate{hit->timeOfImpact, circle, kind, other, hit->normal};
+        };
+        for (int i = 0; i < circleCount_; ++i) {
+            const Circle& c = ctx.circles[i];
+            if (c.motion != Motion::dynamic) continue;
+            for (int j = 0; j < circleCount_; ++j) {
+                const Circle& o = ctx.circles[j];
+                const bool dynamicOther = o.motion == Motion::dynamic;
+                if (j == i || (dynamicOther && j < i) || resting(i, Other::circle, j)) continue;
+                // Two falling balls share gravity: relative to each other they move in straight lines
+                // (the lecture's quadratic); against a kinematic circle the relative motion is a parabola.
+                const CircleMotion motion{c.position, c.velocity - o.velocity, c.radius, dynamicOther ? Vec2{} : g};
+                consider(circleCircleCollision(motion, o.position, o.radius, horizon), i, Other::circle, j);
+            }
+            for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
+                const Segment& s = ctx.segments[k];
+                if (resting(i, Other::segment, k)) continue;
+                const CircleMotion motion{c.position, c.velocity - s.velocity, c.radius, g};
+                const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, horizon);
+                consider(hit, i, hit && hit->lineCap ? Other::segmentCap : Other::segment, k);
+            }
+        }
+        return best;
+    }
+
+    // Moves every body over t: dynamic ones exactly along their parabola, kinematic ones linearly.
+    static void advance(StepContext& ctx, double t) {
+        if (t <= 0.0) return;
+        const Vec2 g = ctx.def.gravity;
         for (Circle& c : ctx.circles) {
-            if (c.motion == Motion::dynamic) c.velocity += ctx.def.gravity * dt;
-            c.position += c.velocity * dt;
+            if (c.motion == Motion::dynamic) {
+                c.position += c.velocity * t + g * (0.5 * t * t); // p + v t + g t^2 / 2
+                c.velocity += g * t;
+            } else if (c.motion == Motion::kinematic) {
+                c.position += c.velocity * t;
+            }
+        }
+        for (Segment& s : ctx.segments) {
+            if (s.motion() != Motion::kinematic) continue;
+            s.a += s.velocity * t;
+            s.b += s.velocity * t;
         }
     }
+
+    // Resolves one impact at world time `time`; slow approaches are resting contact (C = 0).
+    void resolve(StepContext& ctx, const Candidate& hit, double time) {
+        Circle& c = ctx.circles[hit.circle];
+        Vec2 otherVelocity;
+        double otherInverseMass = 0.0;
+        double bounciness = 0.0;
+        Circle* dynamicOther = nullptr;
+        if (hit.kind == Other::circle) {
+            Circle& o = ctx.circles[hit.other];
+            otherVelocity = o.velocity;
+            otherInverseMass = o.inverseMass;
+            bounciness = pairBounciness(c.material, o.material);
+            if (o.motion == Motion::dynamic) dynamicOther = &o;
+        } else {
+            const Segment& s = ctx.segments[hit.other];
+            otherVelocity = s.velocity;
+            bounciness = pairBounciness(c.material, s.material);
+        }
+        const double approach = approachSpeed(c.velocity, otherVelocity, hit.normal);
+        const bool isResting = approach < ctx.restingSpeed;
+        resolveImpact(c.velocity, c.inverseMass, otherVelocity, otherInverseMass, hit.normal,
+                      isResting ? 0.0 : bounciness);
+        if (dynamicOther) dynamicOther->velocity = otherVelocity;
+
+        // The surfaces touch one radius from the centre, against the normal.
+        ctx.impacts.push_back(Impact{hit.circle, hit.kind, hit.other, time, c.position - hit.normal * c.radius,
+                                     hit.normal, std::max(approach, 0.0)});
+        ++ctx.stats.impacts;
+        if (isResting) {
+            // Touching with no normal speed under gravity, the pair would be found again at t = 0 for
+            // ever: leave it out for the rest of the step and push it apart at the end instead.
+            ++ctx.stats.restingContacts;
+            std::uint8_t state = kRestingPlus;
+            if (hit.kind != Other::circle) {
+                const Segment& s = ctx.segments[hit.other];
+                if ((s.b - s.a).normal().dot(hit.normal) < 0.0) state = kRestingMinus;
+            }
+            pairs_[pairIndex(hit.circle, hit.kind, hit.other)] = state;
+        } else {
+            // A real impact may drive a body into what it rests on: search those pairs again.
+            searchAgain(hit.circle);
+            if (dynamicOther) searchAgain(hit.other);
+        }
+    }
+
+    void searchAgain(int circle) {
+        for (int k = 0; k < columns_; ++k) pairs_[pairIndex(circle, k)] = kSearched;
+        for (int i = 0; i < circle; ++i) pairs_[pairIndex(i, circle)] = kSearched;
+    }
+
+    // Resting bodies fell into what they rest on for the rest of the step (g t^2 / 2, a millimetre
+    // or so): push every touching pair back out and remove its approaching normal velocity, so
+    // resting never sinks. Pairs go from the ground up and the body nearer the ground counts as
+    // infinite mass against one above it (shock propagation): one pass settles a whole stack.
+    void settleContacts(StepContext& ctx, double dt) {
+        collectContacts(ctx, ctx.restingSpeed * dt);
+        if (contacts_.empty()) return;
+        orderFromTheGroundUp(ctx);
+        for (int pass = 0; pass < kSettlePasses; ++pass) {
+            double deepest = 0.0;
+            for (const Contact& contact : contacts_) deepest = std::max(deepest, settle(ctx, contact));
+            if (deepest <= kSettledDepth) break;
+        }
+    }
+
+    // Every pair closer than `slop` (what a resting approach covers in a step): the settle may push
+    // a body into a neighbour it was only touching, as a stack's lowest ball into the one above it.
+    void collectContacts(const StepContext& ctx, double slop) {
+        contacts_.clear();
+        for (int i = 0; i < circleCount_; ++i) {
+            const Circle& c = ctx.circles[i];
+            if (c.motion != Motion::dynamic) continue;
+            for (int j = 0; j < circleCount_; ++j) {
+                const Circle& o = ctx.circles[j];
+                if (j == i || (o.motion == Motion::dynamic && j < i)) continue;
+                if (circleCircleOverlap(c.position, c.radius + slop, o.position, o.radius))
+                    contacts_.push_back(Contact{i, Other::circle, j, {}});
+            }
+            for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
+                const Segment& s = ctx.segments[k];
+                // A resting circle keeps the side it came from, even if its centre sank past the line.
+                const std::uint8_t state = pairs_[pairIndex(i, Other::segment, k)];
+                const Vec2 lineNormal = (s.b - s.a).normal();
+                const Vec2 side = state == kRestingPlus    ? lineNormal
+                                  : state == kRestingMinus ? -lineNormal
+                                                           : segmentSide(s, c.position);
+                if (circleSegmentOverlapOnSide(c.position, c.radius + slop, s, side))
+                    contacts_.push_back(Contact{i, Other::segment, k, side});
+            }
+        }
+    }
+
+    // Level 0: held up by something of infinite mass; level n + 1: held up by a body of level n.
+    // Only contacts against gravity count: a ball squeezed between two walls is not on the ground,
+    // and two infinite masses pushing one body from both sides would never settle.
+    void orderFromTheGroundUp(const StepContext& ctx) {
+        constexpr int kFloating = std::numeric_limits<int>::max();
+        const Vec2 down = ctx.def.gravity.normalized();
+        levels_.assign(ctx.circles.size(), kFloating);
+        for (Contact& contact : contacts_) {
+            const Circle& c = ctx.circles[contact.circle];
+            const Vec2 below = contact.kind == Other::circle
+                                   ? ctx.circles[contact.other].position
+                                   : closestPointOnSegment(c.position, ctx.segments[contact.other].a,
+                                                           ctx.segments[contact.other].b);
+            const Vec2 up = (c.position - below).normalized(); // from the other towards the circle
+            const double along = up.dot(down);
+            contact.support = along < -kSupportSine ? 1 : along > kSupportSine ? -1 : 0;
+            const bool ground = contact.kind != Other::circle || ctx.circles[contact.other].motion != Motion::dynamic;
+            if (ground && contact.support > 0) levels_[contact.circle] = 0;
+        }
+        // Bellman-Ford over the contacts: one round per level of the tallest stack.
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (const Contact& contact : contacts_) {
+                if (contact.kind != Other::circle || ctx.circles[contact.other].motion != Motion::dynamic) continue;
+                int& lower = contact.support > 0 ? levels_[contact.other] : levels_[contact.circle];
+                int& upper = contact.support > 0 ? levels_[contact.circle] : levels_[contact.other];
+                if (contact.support != 0 && lower != kFloating && lower + 1 < upper) upper = lower + 1, changed = true;
+            }
+        }
+        // Lower pairs first; ties in index order, so the order is the same on every run.
+        const auto key = [&](const Contact& c) {
+            const bool dynamicOther = c.kind == Other::circle && ctx.circles[c.other].motion == Motion::dynamic;
+            const int lower = dynamicOther ? std::min(levels_[c.circle], levels_[c.other]) : -1;
+            return std::make_tuple(lower, c.circle, static_cast<int>(c.kind), c.other);
+        };
+        std::sort(contacts_.begin(), contacts_.end(),
+                  [&](const Contact& x, const Contact& y) { return key(x) < key(y); });
+    }
+
+    // Pushes one contact apart and stops a resting approach (C = 0); returns the overlap removed.
+    double settle(StepContext& ctx, const Contact& contact) const {
+        Circle& c = ctx.circles[contact.circle];
+        std::optional<Overlap> overlap;
+        Vec2 otherPosition, otherVelocity;
+        double inverseMassC = c.inverseMass, inverseMassO = 0.0, bounciness = 0.0;
+        Circle* dynamicOther = nullptr;
+        if (contact.kind == Other::circle) {
+            Circle& o = ctx.circles[contact.other];
+            overlap = circleCircleOverlap(c.position, c.radius, o.position, o.radius);
+            otherPosition = o.position;
+            otherVelocity = o.velocity;
+            inverseMassO = o.inverseMass;
+            bounciness = pairBounciness(c.material, o.material);
+            if (o.motion == Motion::dynamic) dynamicOther = &o;
+        } else {
+            const Segment& s = ctx.segments[contact.other];
+            const auto hit = circleSegmentOverlapOnSide(c.position, c.radius, s, contact.side);
+            if (hit) overlap = hit->overlap;
+            otherVelocity = s.velocity;
+            bounciness = pairBounciness(c.material, s.material);
+        }
+        if (!overlap) return 0.0;
+        const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) < ctx.restingSpeed;
+        if (dynamicOther && isResting) {
+            // The body holding the other up, nearer the ground, holds still as if of infinite mass.
+            const int levelC = levels_[contact.circle], levelO = levels_[contact.other];
+            if (contact.support < 0 && levelC < levelO) inverseMassC = 0.0;
+            if (contact.support > 0 && levelO < levelC) inverseMassO = 0.0;
+        }
+        pushApart(c.position, inverseMassC, otherPosition, inverseMassO, overlap->normal, overlap->depth);
+        resolveImpact(c.velocity, inverseMassC, otherVelocity, inverseMassO, overlap->normal,
+                      isResting ? 0.0 : bounciness);
+        if (dynamicOther) {
+            dynamicOther->position = otherPosition;
+            dynamicOther->velocity = otherVelocity;
+        }
+        return overlap->depth;
+    }
+
+    int circleCount_ = 0;
+    int columns_ = 0;
+    std::vector<std::uint8_t> pairs_; ///< PairState per pair: circles x (circles + segments)
+    std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
+    std::vector<int> levels_;         ///< per circle: contacts between it and the ground
+    std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit
 };
+
 } // namespace
+
 std::unique_ptr<StepMethod> makeExactMethod() { return std::make_unique<ExactMethod>(); }
+
 } // namespace rube

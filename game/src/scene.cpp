@@ -1,0 +1,30 @@
+// Scene: turning a validated description into a physics World.
+#include "scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rube::game {
+
+std::int64_t SceneDesc::defaultSteps() const {
+    if (!duration) return kDefaultSteps;
+    // Forgive rounding in duration / time_step (10 / 0.1 is 100.00000000000001), then round up
+    // so the run covers at least the whole duration.
+    const double steps = *duration / world.timeStep;
+    return static_cast<std::int64_t>(std::ceil(steps - 1e-9 * std::max(1.0, steps)));
+}
+
+std::size_t SceneDesc::dynamicCircleCount() const {
+    return static_cast<std::size_t>(std::count_if(circles.begin(), circles.end(),
+                                                  [](const CircleDef& c) { return c.motion == Motion::dynamic; }));
+}
+
+World buildWorld(const SceneDesc& scene) {
+    World world(scene.world);
+    for (const NamedPath& path : scene.paths) world.addPath(path.path);
+    for (const CircleDef& circle : scene.circles) world.addCircle(circle);
+    for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
+    return world;
+}
+
+} // namespace rube::game

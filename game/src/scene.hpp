@@ -1,0 +1,45 @@
+#pragma once
+/// Scene: what a scene file describes, held game-side, and how it becomes a physics World.
+
+#include "rube/physics/world.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// A scripted path with the name scene files refer to it by.
+struct NamedPath {
+    std::string name;   ///< unique within the scene
+    KinematicPath path; ///< offsets from where each body following it was placed
+};
+
+/// Everything a scene file says, validated; the physics definitions are ready to hand to a World.
+/// Circles and segments refer to paths by index into `paths`, which is also the World's index.
+struct SceneDesc {
+    std::string name;               ///< shown in the run summary; by convention the file's stem
+    std::string description;        ///< one sentence: what the scene demonstrates
+    WorldDef world;                 ///< gravity, time step, method, bounds: the physics defaults unless set
+    std::optional<double> duration; ///< seconds `rube run` simulates when no --steps is given
+    std::vector<NamedPath> paths;    ///< in file order: index i is the World's path i
+    std::vector<CircleDef> circles;  ///< in file order, [[circle_grid]] circles row by row from the bottom
+    std::vector<SegmentDef> segments; ///< in file order
+
+    /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.
+    std::int64_t defaultSteps() const;
+    /// How many circles move under gravity and impacts (the bodies a trace records).
+    std::size_t dynamicCircleCount() const;
+};
+
+/// Every time-step method, in the order help and error messages list them.
+inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver};
+
+/// The number of steps a run takes when the scene has no duration (10 s at 60 steps per second).
+inline constexpr std::int64_t kDefaultSteps = 600;
+
+/// Builds the World: paths first, so that body path indices are valid, then circles and segments.
+World buildWorld(const SceneDesc& scene);
+
+} // namespace rube::game

@@ -1,0 +1,195 @@
+// Scene files: the top level, [world] and [[path]]; the bodies are read in scene_bodies.cpp.
+#include "scene_file.hpp"
+
+#include "scene_reading.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace rube::game {
+
+namespace {
+
+constexpr std::string_view kTopKeys[] = {"name", "description", "world", "path", "circle", "circle_grid", "segment"};
+constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
+                                           "substeps",  "max_events_per_step", "resting_speed", "duration"};
+constexpr std::string_view kBoundsKeys[] = {"min", "max"};
+constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
+
+// A world key written at the top level is a common slip; say where it goes instead of guessing a typo.
+constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},  {"time_step", "[world]"},     {"method", "[world]"},
+                                 {"bounds", "[world]"},   {"substeps", "[world]"},      {"duration", "[world]"},
+                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}};
+
+// A run longer than this is a mistake in duration or time_step, not a plan.
+constexpr double kMaxDefaultSteps = 1e9;
+
+// toml++ says "Error while parsing key-value pair: expected value"; keep its precise words but
+// make it read as one of ours: "syntax error in key-value pair: expected value".
+std::string syntaxMessage(std::string_view description) {
+    constexpr std::string_view prefix = "Error while parsing ";
+    if (description.starts_with(prefix)) return "syntax error in " + std::string(description.substr(prefix.size()));
+    return "syntax error: " + std::string(description);
+}
+
+void readBounds(TableReader& world, SceneDesc& scene) {
+    const toml::table* table = world.table("bounds", "{ min = [x, y], max = [x, y] }");
+    if (!table) return;
+    TableReader bounds(*table, "in world.bounds", kBoundsKeys, world.diagnostics());
+    const auto min = bounds.vec2("min", Need::required);
+    const auto max = bounds.vec2("max", Need::required);
+    if (!min || !max) return;
+    if (!(min->x < max->x && min->y < max->y)) {
+        bounds.error(bounds.valuePlace("max"), "bounds max must be greater than min in both x and y, got min " +
+                                                   formatPair(min->x, min->y) + " and max " + formatPair(max->x, max->y));
+        return;
+    }
+    scene.world.bounds = {*min, *max};
+}
+
+void readWorld(TableReader& root, SceneDesc& scene) {
+    const toml::table* table = root.table("world", "[world]");
+    if (!table) return;
+    TableReader world(*table, "in [world]", kWorldKeys, root.diagnostics());
+    WorldDef& def = scene.world;
+    if (const auto g = world.vec2("gravity")) def.gravity = *g;
+    if (const auto dt = world.number("time_step", NumberRange::positive())) def.timeStep = *dt;
+    std::string_view names[std::size(kAllMethods)];
+    std::transform(std::begin(kAllMethods), std::end(kAllMethods), names, methodName);
+    if (const auto m = world.choice("method", names)) def.method = kAllMethods[*m];
+    readBounds(world, scene);
+    if (const auto n = world.integer("substeps", 1, 1000)) def.substeps = static_cast<int>(*n);
+    if (const auto n = world.integer("max_events_per_step", 1, 10'000'000)) def.maxEventsPerStep = static_cast<int>(*n);
+    if (const auto v = world.number("resting_speed", NumberRange::nonNegative())) def.restingSpeed = *v;
+    if (const auto d = world.number("duration", NumberRange::positive())) {
+        if (*d / def.timeStep > kMaxDefaultSteps)
+            world.error(world.valuePlace("duration"), "duration " + formatNumber(*d) + " s at time_step " +
+                                                          formatNumber(def.timeStep) + " s is more than 1e9 steps");
+        else scene.duration = *d;
+    }
+}
+
+// The keys of a path: [[t, x, y], ...] with t increasing, at least two of them.
+std::optional<KinematicPath> readKeys(TableReader& path) {
+    const toml::node* node = path.get("keys", Need::required);
+    if (!node) return std::nullopt;
+    const auto* array = node->as_array();
+    if (!array) {
+        path.error(placeOf(node->source()), "keys must be an array of [t, x, y] keys, got " + std::string(typeName(*node)));
+        return std::nullopt;
+    }
+    if (array->size() < 2) {
+        path.error(placeOf(node->source()), "keys must hold at least 2 keys [t, x, y], got " + std::to_string(array->size()));
+        return std::nullopt;
+    }
+    KinematicPath result;
+    bool ok = true;
+    for (const toml::node& element : *array) {
+        const auto* key = element.as_array();
+        if (!key || key->size() != 3) {
+            path.error(placeOf(element.source()), "a path key must be [t, x, y], got " +
+                                                      (key ? std::to_string(key->size()) + " numbers" : std::string(typeName(element))));
+            ok = false;
+            continue;
+        }
+        const auto t = readNumber(*key->get(0), "a path key's t", path.diagnostics());
+        const auto x = readNumber(*key->get(1), "a path key's x", path.diagnostics());
+        const auto y = readNumber(*key->get(2), "a path key's y", path.diagnostics());
+        if (!t || !x || !y) {
+            ok = false;
+            continue;
+        }
+        // Equal times would be a jump, moving the body with infinite speed for one step.
+        if (!result.keys.empty() && *t <= result.keys.back().time) {
+            path.error(placeOf(key->get(0)->source()), "path key times must increase, got " + formatNumber(*t) +
+                                                           " after " + formatNumber(result.keys.back().time));
+            ok = false;
+        } else if (result.keys.empty() && *t < 0.0) {
+            path.error(placeOf(key->get(0)->source()), "path key times must be at least 0, got " + formatNumber(*t));
+            ok = false;
+        }
+        result.keys.push_back({*t, {*x, *y}});
+    }
+    if (!ok) return std::nullopt;
+    return result;
+}
+
+void readPaths(TableReader& root, SceneReading& reading) {
+    for (const toml::table* table : root.arrayOfTables("path")) {
+        TableReader path(*table, "in [[path]]", kPathKeys, reading.diag);
+        const auto name = path.string("name", Need::required);
+        auto keys = readKeys(path);
+        const auto loop = path.boolean("loop");
+        if (!name) continue;
+        if (name->empty()) {
+            path.error(path.valuePlace("name"), "name must not be empty");
+            continue;
+        }
+        if (reading.pathIndex.contains(*name)) {
+            path.error(path.valuePlace("name"), "a path named '" + *name + "' is already defined");
+            continue;
+        }
+        // Registered even when its keys are wrong, so bodies using it do not also report it as unknown.
+        reading.pathIndex[*name] = static_cast<int>(reading.scene.paths.size());
+        NamedPath named{*name, keys.value_or(KinematicPath{})};
+        named.path.loop = loop.value_or(false);
+        reading.scene.paths.push_back(std::move(named));
+    }
+}
+
+} // namespace
+
+std::optional<int> readPathReference(TableReader& table, SceneReading& reading) {
+    const auto name = table.string("path");
+    if (!name) return std::nullopt;
+    if (const auto it = reading.pathIndex.find(*name); it != reading.pathIndex.end()) return it->second;
+    std::vector<std::string_view> defined;
+    for (const auto& [known, index] : reading.pathIndex) defined.push_back(known);
+    std::string message = "unknown path '" + *name + "'";
+    if (defined.empty()) message += " (no [[path]] is defined)";
+    else if (const auto match = closestMatch(*name, defined)) message += " (did you mean '" + std::string(*match) + "'?)";
+    else message += " (defined paths: " + joinNames(defined) + ")";
+    table.error(table.valuePlace("path"), std::move(message));
+    return std::nullopt;
+}
+
+SceneLoad parseScene(std::string_view text, const std::string& fileName) {
+    Diagnostics diag(fileName);
+    toml::table document;
+    try {
+        document = toml::parse(text, std::string_view(fileName));
+    } catch (const toml::parse_error& e) {
+        diag.error(placeOf(e.source()), syntaxMessage(e.description()));
+        return {std::nullopt, diag.sorted()};
+    }
+    SceneDesc scene;
+    SceneReading reading{diag, scene, {}};
+    TableReader root(document, "at the top level", kTopKeys, diag, kTopHomes);
+    if (const auto name = root.string("name", Need::required)) {
+        if (name->empty()) root.error(root.valuePlace("name"), "name must not be empty");
+        scene.name = *name;
+    }
+    scene.description = root.string("description").value_or("");
+    readWorld(root, scene);
+    readPaths(root, reading);
+    readCircles(root, reading);
+    readCircleGrids(root, reading);
+    readSegments(root, reading);
+    if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    return {std::move(scene), {}};
+}
+
+SceneLoad loadSceneFile(const std::filesystem::path& file) {
+    const std::string fileName = file.string();
+    std::error_code ec;
+    // An ifstream opens a directory without complaint on Linux; only reading it fails.
+    std::ifstream in(file, std::ios::binary);
+    if (!in || std::filesystem::is_directory(file, ec)) return {std::nullopt, {{fileName, {}, "cannot open file"}}};
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return {std::nullopt, {{fileName, {}, "cannot read file"}}};
+    return parseScene(text.str(), fileName);
+}
+
+} // namespace rube::game

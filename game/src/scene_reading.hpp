@@ -1,0 +1,31 @@
+#pragma once
+/// Internal to the scene file parser: the state shared by the readers of each kind of table.
+
+#include "scene.hpp"
+#include "toml_reader.hpp"
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace rube::game {
+
+/// What the table readers share while one file is read.
+struct SceneReading {
+    Diagnostics& diag; ///< where every reader reports
+    SceneDesc& scene;  ///< what the readers fill in
+    std::map<std::string, int, std::less<>> pathIndex; ///< path name -> index in scene.paths
+};
+
+/// Reads every [[circle]] of the file into scene.circles.
+void readCircles(TableReader& root, SceneReading& reading);
+/// Reads every [[circle_grid]] of the file, appending its circles row by row from the bottom.
+void readCircleGrids(TableReader& root, SceneReading& reading);
+/// Reads every [[segment]] of the file into scene.segments.
+void readSegments(TableReader& root, SceneReading& reading);
+
+/// The index of the path a body's `path` key names, reporting an unknown name (with the
+/// closest defined name) at the key; nothing when the key is absent or wrong.
+std::optional<int> readPathReference(TableReader& table, SceneReading& reading);
+
+} // namespace rube::game

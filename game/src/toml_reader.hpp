@@ -1,0 +1,108 @@
+#pragma once
+/// Reading one TOML table against what it may hold: typed values, ranges and unknown keys,
+/// each problem reported once at the place it was written.
+
+#include "scene_errors.hpp"
+
+#include "rube/physics/vec2.hpp"
+
+#include <toml++/toml.h>
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rube::game {
+
+/// Where a toml++ node or key begins.
+SourcePlace placeOf(const toml::source_region& region);
+
+/// The TOML type of a node as messages name it: "string", "integer", "float", "boolean", "array", ...
+std::string_view typeName(const toml::node& node);
+
+/// The interval a number must lie in; `describe` gives the words for the error message.
+struct NumberRange {
+    double min = -std::numeric_limits<double>::infinity(); ///< lowest allowed value
+    double max = std::numeric_limits<double>::infinity();  ///< highest allowed value, always included
+    bool minExcluded = false;                              ///< true for "greater than min"
+
+    /// Any finite number.
+    static NumberRange any() { return {}; }
+    /// Greater than zero: sizes, masses, time steps.
+    static NumberRange positive() { return {0.0, std::numeric_limits<double>::infinity(), true}; }
+    /// Zero or more: thicknesses, friction, speeds.
+    static NumberRange nonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false}; }
+    /// From 0 to 1 inclusive: the coefficient of restitution C (lecture 3).
+    static NumberRange unit() { return {0.0, 1.0, false}; }
+
+    /// True when `value` lies in the interval.
+    bool contains(double value) const;
+    /// "greater than 0", "at least 0", "between 0 and 1".
+    std::string describe() const;
+};
+
+/// Whether a missing key is an error or takes its default.
+enum class Need { optional, required };
+
+/// A key that belongs in another table, for the hint "(it belongs in [world])".
+struct KeyHome {
+    std::string_view key;  ///< the key as written
+    std::string_view home; ///< the table it belongs in, as the message shows it: "[world]"
+};
+
+/// Reads a node as a finite number (TOML integers count), or reports
+/// "`what` must be a number, got string" or "`what` must be finite, got nan" at the node.
+std::optional<double> readNumber(const toml::node& node, std::string_view what, Diagnostics& diag);
+
+/// Reads the values of one table. Construction reports every key the table may not hold,
+/// with the closest known key as a suggestion; each getter then reports a wrong type, a value
+/// out of range, or a missing required key, and returns nothing in those cases.
+class TableReader {
+public:
+    /// `where` ends the messages: "in [[circle]]", "in [world]", "at the top level".
+    TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known,
+                Diagnostics& diag, std::span<const KeyHome> homes = {});
+
+    /// The value under `key`, or null.
+    const toml::node* find(std::string_view key) const { return table_.get(key); }
+    /// The value under `key`, or null, reporting the key as missing when it is required.
+    const toml::node* get(std::string_view key, Need need);
+    /// Where the table begins: its [[header]], its `{`, or 1:1 for the whole file.
+    SourcePlace tablePlace() const { return placeOf(table_.source()); }
+    /// Where the value of `key` begins, or the table's place when the key is absent.
+    SourcePlace valuePlace(std::string_view key) const;
+
+    /// A finite number within `range`.
+    std::optional<double> number(std::string_view key, NumberRange range = NumberRange::any(), Need need = Need::optional);
+    /// A whole number within [min, max].
+    std::optional<std::int64_t> integer(std::string_view key, std::int64_t min, std::int64_t max, Need need = Need::optional);
+    /// An [x, y] pair of finite numbers.
+    std::optional<Vec2> vec2(std::string_view key, Need need = Need::optional);
+    /// Either one number, used for both x and y, or an [x, y] pair.
+    std::optional<Vec2> numberOrVec2(std::string_view key, NumberRange range, Need need = Need::optional);
+    /// A string.
+    std::optional<std::string> string(std::string_view key, Need need = Need::optional);
+    /// true or false.
+    std::optional<bool> boolean(std::string_view key, Need need = Need::optional);
+    /// A string that must be one of `names`; returns its index in `names`.
+    std::optional<std::size_t> choice(std::string_view key, std::span<const std::string_view> names, Need need = Need::optional);
+    /// A nested table such as `bounds = { min = [..], max = [..] }`; `shape` shows how to write it.
+    const toml::table* table(std::string_view key, std::string_view shape, Need need = Need::optional);
+    /// The tables of an array of tables such as [[circle]]; none when the key is absent.
+    std::vector<const toml::table*> arrayOfTables(std::string_view key);
+
+    /// Reports an error about this table's contents.
+    void error(SourcePlace place, std::string message);
+    /// The diagnostics this reader reports to.
+    Diagnostics& diagnostics() { return diag_; }
+
+private:
+    const toml::table& table_;
+    std::string where_;
+    Diagnostics& diag_;
+};
+
+} // namespace rube::game

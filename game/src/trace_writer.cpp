@@ -1,0 +1,88 @@
+// The trace CSV: written to a temporary file, renamed into place at the end.
+#include "trace_writer.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
+
+namespace rube::game {
+
+namespace {
+
+std::string describeErrno(int error) { return std::strerror(error); }
+
+} // namespace
+
+TraceWriter::~TraceWriter() { discard(); }
+
+bool TraceWriter::open(const std::filesystem::path& target, std::string& error) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(target, ec)) {
+        error = target.string() + ": cannot write trace: it is a directory";
+        return false;
+    }
+    target_ = target;
+    // Same folder as the target, so the final rename stays on one file system and is atomic;
+    // the process id keeps two runs writing the same trace from sharing a temporary file.
+    temporary_ = target;
+    temporary_ += ".tmp-" + std::to_string(::getpid());
+    file_ = std::fopen(temporary_.c_str(), "wx");
+    if (!file_) {
+        error = target.string() + ": cannot write trace: " + describeErrno(errno);
+        temporary_.clear(); // not ours: discard() must not delete a file another run created
+        return false;
+    }
+    // A large buffer: a pile of 1000 balls writes a row per ball per step.
+    std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
+    std::fprintf(file_, "%s\n", kTraceHeader);
+    return true;
+}
+
+void TraceWriter::writeState(const World& world) {
+    if (!file_) return;
+    const long long step = static_cast<long long>(world.stats().steps);
+    const auto circles = world.circles();
+    for (std::size_t i = 0; i < circles.size(); ++i) {
+        const Circle& c = circles[i];
+        if (c.motion != Motion::dynamic) continue;
+        // angle and omega stay 0 until bodies rotate; the columns are there so traces keep one shape.
+        std::fprintf(file_, "%lld,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,0,0,%.17g\n", step, world.time(), i,
+                     c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.radius);
+        ++rows_;
+    }
+}
+
+bool TraceWriter::commit(std::string& error) {
+    if (!file_) return false;
+    const bool writeFailed = std::ferror(file_) != 0;
+    const bool closeFailed = std::fclose(file_) != 0;
+    file_ = nullptr;
+    if (writeFailed || closeFailed) {
+        error = target_.string() + ": cannot write trace: " + describeErrno(errno);
+        discard();
+        return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary_, target_, ec);
+    if (ec) {
+        error = target_.string() + ": cannot write trace: " + ec.message();
+        discard();
+        return false;
+    }
+    temporary_.clear();
+    return true;
+}
+
+void TraceWriter::discard() {
+    if (file_) {
+        std::fclose(file_);
+        file_ = nullptr;
+    }
+    if (!temporary_.empty()) {
+        std::error_code ec;
+        std::filesystem::remove(temporary_, ec);
+        temporary_.clear();
+    }
+}
+
+} // namespace rube::game

@@ -1,0 +1,48 @@
+#pragma once
+/// The trace: a CSV of every dynamic body's state at every step, for plots and exact comparisons.
+///
+/// Header `step,time,body,x,y,vx,vy,angle,omega,radius`; step 0 is the initial state, then one
+/// block of rows per step. `body` is the circle's index in the World. Doubles are printed with
+/// %.17g, so a trace reads back bit-exact and two runs can be compared byte for byte.
+
+#include "rube/physics/world.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace rube::game {
+
+/// The trace's header line, without the newline.
+inline constexpr const char* kTraceHeader = "step,time,body,x,y,vx,vy,angle,omega,radius";
+
+/// Writes a trace into a temporary file beside its target and renames it into place only when the
+/// run has finished, so a failed or interrupted run never leaves a half-written trace behind.
+class TraceWriter {
+public:
+    TraceWriter() = default;
+    /// Discards the temporary file unless commit() succeeded.
+    ~TraceWriter();
+    TraceWriter(const TraceWriter&) = delete;
+    TraceWriter& operator=(const TraceWriter&) = delete;
+
+    /// Creates the temporary file and writes the header; false, with `error` set, when it cannot.
+    bool open(const std::filesystem::path& target, std::string& error);
+    /// Appends one row per dynamic circle in the world's current state.
+    void writeState(const World& world);
+    /// Finishes the file and renames it onto the target; false, with `error` set, when that fails.
+    bool commit(std::string& error);
+    /// Deletes the temporary file; the target is left as it was.
+    void discard();
+    /// The rows written so far, not counting the header.
+    std::int64_t rows() const { return rows_; }
+
+private:
+    std::FILE* file_ = nullptr;
+    std::filesystem::path target_;
+    std::filesystem::path temporary_;
+    std::int64_t rows_ = 0;
+};
+
+} // namespace rube::game

@@ -1,0 +1,45 @@
+#pragma once
+/// RenderContext: a GL 3.3 core context and the framebuffer it draws into, offscreen or in a window.
+
+#include "rube/render/camera.hpp"
+#include "rube/render/image.hpp"
+
+#include <memory>
+#include <string>
+
+namespace rube::render {
+
+/// Where frames are drawn. Deliberately narrow, so that another back end (an EGL surfaceless
+/// context once Mesa drops OSMesa, as 25.1 did) only has to provide these few calls.
+/// GL functions are loaded into one global table when a context is made, so a process uses
+/// one kind of context (offscreen or window), though it may make several of that kind.
+class RenderContext {
+public:
+    virtual ~RenderContext() = default;
+    /// Makes this context current on the calling thread (GL calls go to it).
+    virtual void makeCurrent() = 0;
+    /// The framebuffer's size in pixels.
+    virtual FrameSize size() const = 0;
+    /// Waits for drawing to finish and copies the frame into `into` as RGB, top row first.
+    virtual void readPixels(Image& into) = 0;
+    /// Shows the frame: swaps a window's buffers and handles its events; offscreen, nothing.
+    virtual void present() = 0;
+    /// Whether the user asked to close the window; an offscreen context never closes.
+    virtual bool closeRequested() const { return false; }
+};
+
+/// An offscreen context rendered on the CPU by Mesa (OSMesa, llvmpipe): needs no display and no
+/// GPU, and draws the same pixels on every run. Throws std::runtime_error when it cannot be made.
+std::unique_ptr<RenderContext> createOffscreenContext(FrameSize size);
+
+/// Options for a window; a caller changes only what it needs.
+struct WindowOptions {
+    std::string title = "rube";
+    bool vsync = true; ///< wait for the display's refresh in present()
+};
+
+/// A window (GLFW) with a GL 3.3 core context. Only for interactive use: it needs a display,
+/// and tests never create one. Throws std::runtime_error when there is no display.
+std::unique_ptr<RenderContext> createWindowContext(FrameSize size, const WindowOptions& options = {});
+
+} // namespace rube::render

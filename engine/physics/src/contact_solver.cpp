@@ -1,0 +1,119 @@
+// The soft-step contact solver's stages: warm start, soft solve, relax, restitution.
+#include "contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rube {
+
+namespace {
+
+/// First push of a contact this step: the speed it arrived with (what restitution reverses), and when
+/// within the substep the gap s closed at normal speed vn.
+void markFirstTouch(ContactRecord& r, int substep, double h, double s, double vn) {
+    if (r.firstTouch >= 0) return;
+    r.firstTouch = substep;
+    r.approachSpeed = -vn;
+    r.touchTime = substep * h + (s > 0.0 && vn < 0.0 ? std::min(s / -vn, h) : 0.0);
+}
+
+} // namespace
+
+Softness makeSoftness(double hertz, double dampingRatio, double h) {
+    if (hertz <= 0.0) return Softness{0.0, 1.0, 0.0};
+    // Implicit Euler on a spring k = m omega^2 with damper c = 2 m zeta omega gives, per unit mass,
+    // lambda = -m (a2/(1+a2)) (vn + (omega/a1) s) - (1/(1+a2)) lambda_old, a1 = 2 zeta + h omega, a2 = h omega a1.
+    const double omega = 2.0 * std::numbers::pi * hertz;
+    const double a1 = 2.0 * dampingRatio + h * omega;
+    const double a2 = h * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    return Softness{omega / a1, a2 * a3, a3};
+}
+
+void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies) {
+    for (const ContactConstraint& c : contacts) {
+        const Vec2 p = c.normal * c.impulse;
+        bodies[c.a].velocity += p * c.invMassA;
+        bodies[c.b].velocity -= p * c.invMassB;
+    }
+}
+
+void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
+                   double maxPushSpeed) {
+    const double invH = 1.0 / h;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        ContactConstraint& c = contacts[k];
+        SolverBody& a = bodies[c.a];
+        SolverBody& b = bodies[c.b];
+        // The current gap from the start gap and the relative displacement along the fixed normal.
+        const double s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
+        const double vn = c.normal.dot(a.velocity - b.velocity);
+        // Speculative (s > 0): closing by at most the gap this substep is allowed, vn >= -s / h, rigidly.
+        // Overlapping: a soft push-out at the spring's bias rate, capped at maxPushSpeed.
+        const Softness& soft = softness[c.invMassB == 0.0 ? 1 : 0];
+        const bool speculative = s > 0.0;
+        const double bias = speculative ? s * invH : std::max(soft.biasRate * s, -maxPushSpeed);
+        const double massScale = speculative ? 1.0 : soft.massScale;
+        const double impulseScale = speculative ? 0.0 : soft.impulseScale;
+        // Sequential impulses with an accumulated, clamped impulse: lambda_total >= 0 (no pulling).
+        const double delta = -c.normalMass * massScale * (vn + bias) - impulseScale * c.impulse;
+        const double total = std::max(c.impulse + delta, 0.0);
+        const double previous = c.impulse;
+        const Vec2 p = c.normal * (total - previous);
+        c.impulse = total;
+        a.velocity += p * c.invMassA;
+        b.velocity -= p * c.invMassB;
+        // Starting to push from zero: the cold record is only touched on this rare transition.
+        if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
+    }
+}
+
+void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, double h, int substep) {
+    const double invH = 1.0 / h;
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        ContactConstraint& c = contacts[k];
+        SolverBody& a = bodies[c.a];
+        SolverBody& b = bodies[c.b];
+        const double s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
+        const double vn = c.normal.dot(a.velocity - b.velocity);
+        // Rigid, no push-out: vn >= 0 when touching, vn >= -s / h when still apart.
+        const double delta = -c.normalMass * (vn + std::max(s, 0.0) * invH);
+        const double total = std::max(c.impulse + delta, 0.0);
+        const double previous = c.impulse;
+        const Vec2 p = c.normal * (total - previous);
+        c.impulse = total;
+        a.velocity += p * c.invMassA;
+        b.velocity -= p * c.invMassB;
+        // A speculative contact may first catch its circle here, after the substep's move.
+        if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
+    }
+}
+
+void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
+                      std::span<SolverBody> bodies, double threshold, Vec2 gravityStep) {
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const ContactConstraint& c = contacts[k];
+        const ContactRecord& r = records[k];
+        // Slow contacts rest: bouncing them would make a resting pile jitter forever.
+        if (r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold) continue;
+        SolverBody& a = bodies[c.a];
+        SolverBody& b = bodies[c.b];
+        const double vn = c.normal.dot(a.velocity - b.velocity);
+        // Semi-implicit Euler conserves H = v^2/2 + g.x - (h/2) g.v in flight, not the energy; a bounce
+        // flips v and so would lose h |v| of apex height each time. Reflecting u + |g.n| h instead of
+        // u restores H exactly for C = 1. Two dynamic circles fall alike: no correction between them.
+        const double gravityInto = c.invMassB > 0.0 ? 0.0 : std::max(-gravityStep.dot(c.normal), 0.0);
+        const double target = r.bounciness * (r.approachSpeed + gravityInto);
+        // lambda = -m (vn - target), clamped so the accumulated impulse stays >= 0.
+        const double delta = -c.normalMass * (vn - target);
+        const double applied = std::max(c.impulse + delta, 0.0) - c.impulse;
+        const Vec2 p = c.normal * applied;
+        a.velocity += p * c.invMassA;
+        b.velocity -= p * c.invMassB;
+    }
+}
+
+} // namespace rube

@@ -1,0 +1,78 @@
+#pragma once
+// Internal: the soft-step contact solver's data and its per-substep stages. Not part of the public API.
+//
+// One step (Catto, "Solver2D" / Box2D v3's soft step): contacts are found once; then every substep
+// integrates velocities, warm starts, solves with soft position feedback, integrates positions and
+// relaxes without it; restitution is applied once at the end. Bodies carry their displacement since
+// the step began, so a contact's current gap is its start gap plus the relative displacement along
+// its fixed normal: s = s0 + n . (dpA - dpB), with no narrowphase inside the substeps.
+
+#include "rube/physics/world.hpp"
+
+#include <span>
+
+namespace rube {
+
+/// A body as the substeps see it: its velocity and how far it has moved since the step began.
+struct alignas(32) SolverBody {
+    Vec2 velocity;     ///< m/s, updated by gravity and contact impulses
+    Vec2 displacement; ///< m moved since the start of the step
+};
+
+/// Coefficients of a soft constraint: a spring-damper of given frequency and damping ratio,
+/// integrated implicitly over one substep (Catto, "Soft Constraints", GDC 2011).
+struct Softness {
+    double biasRate = 0.0;     ///< omega / (2 zeta + h omega): position error to velocity bias
+    double massScale = 1.0;    ///< h omega a1 / (1 + h omega a1), a1 = 2 zeta + h omega
+    double impulseScale = 0.0; ///< 1 / (1 + h omega a1): how much of the old impulse to forget
+};
+
+/// The softness of a spring of `hertz` and `dampingRatio`, integrated over substeps of `h` seconds.
+Softness makeSoftness(double hertz, double dampingRatio, double h);
+
+/// One contact between dynamic circle `a` and body `b` (circle or segment), the hot data the
+/// substeps touch: one cache line each, in the order the solver sweeps them.
+struct alignas(64) ContactConstraint {
+    int a = 0;                   ///< solver body index of the dynamic circle
+    int b = 0;                   ///< solver body index of the other body (circles first, then segments)
+    Vec2 normal;                 ///< unit, from b towards a, fixed for the step
+    double baseSeparation = 0.0; ///< surface gap at the start of the step (negative: overlap)
+    double invMassA = 0.0;       ///< 1 / mass of the circle
+    double invMassB = 0.0;       ///< 0 for kinematic and static bodies (lecture 3: infinite mass)
+    double normalMass = 0.0;     ///< 1 / (invMassA + invMassB), the pair's effective mass along n
+    double impulse = 0.0;        ///< accumulated normal impulse of the current substep (>= 0)
+};
+
+/// The cold side of a contact: what restitution and the impact record need. A contact that starts
+/// the step pushing (warm started) is resting; one that starts at zero impulse and pushes has touched.
+struct ContactRecord {
+    Other kind = Other::circle; ///< what the circle touches: a circle, a segment's side or its cap
+    double bounciness = 0.0;    ///< product of both materials' bounciness
+    double approachSpeed = 0.0; ///< -vn when the contact first pushed: the speed restitution reverses
+    double touchTime = 0.0;     ///< seconds into the step at which it first touched
+    int firstTouch = -1;        ///< substep in which a contact that started at rest first pushed, or -1
+};
+
+/// Applies last substep's impulses again as the starting guess: v += M^-1 n lambda (warm starting).
+void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies);
+
+/// One Gauss-Seidel sweep with soft position feedback: overlap is pushed out softly, speculative
+/// contacts (gap s > 0) only forbid closing more than the gap within this substep, vn >= -s / h.
+/// softness[0] applies between two dynamic circles, softness[1] against infinite mass. Marks contacts
+/// that start pushing for the first time this step with `substep` and their approach speed.
+void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
+                   double maxPushSpeed);
+
+/// One rigid Gauss-Seidel sweep without position feedback (relax): removes the push-out velocity
+/// the soft solve added, so overlap is corrected in position without gaining energy.
+void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, double h, int substep);
+
+/// Restitution once per step for contacts that touched faster than `threshold`: the normal velocity
+/// becomes C times the approach speed (v' = u - C (v - u), lecture 3), the approach taken one substep
+/// of gravity later (`gravityStep` = g h) against infinite mass, so bounces keep their height.
+void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
+                      std::span<SolverBody> bodies, double threshold, Vec2 gravityStep);
+
+} // namespace rube

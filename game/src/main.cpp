@@ -8,6 +8,10 @@
 #include <charconv>
 #include <cstdint>
 #include <iostream>
+#include <optional>
+#include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -18,7 +22,8 @@ constexpr const char* kRunFooter =
     "Prints: scene, method, steps, simulated time, wall time of the physics alone, impacts,\n"
     "  resting contacts, caps hit (steps that reached max_events_per_step), escapes (bodies that\n"
     "  left the bounds) and the state hash: equal hashes mean bit-identical final states.\n"
-    "Steps: --steps N, else the scene's [world] duration / time_step rounded up, else 600.\n"
+    "Steps: --steps N; else (N - 1) x K with --frames N; else the scene's [world] duration /\n"
+    "  time_step rounded up; else 600.\n"
     "Methods: discrete (fixed step, pushes overlaps apart; tunnels when speed x dt > 2r),\n"
     "  turn-based (bodies move one by one until their first impact; order matters),\n"
     "  exact (earliest time of impact over all pairs, one at a time),\n"
@@ -29,9 +34,26 @@ constexpr const char* kRunFooter =
     "  by row from the bottom. Numbers are printed with %.17g, so traces compare byte for byte.\n"
     "  angle and omega are 0 until bodies rotate. The trace is written to a temporary file and\n"
     "  renamed at the end: a failed or interrupted run leaves no trace file.\n"
+    "Frames: with --out DIR, DIR/frame_00000.png is the initial state and frame n shows the\n"
+    "  world after n x K steps (--every K, default 1), five digits as ffmpeg's frame_%05d.png\n"
+    "  reads them. --frames N stops after N frames, frame 0 included (default: steps / K + 1);\n"
+    "  without --steps the run then lasts (N - 1) x K steps. DIR is created if missing, and\n"
+    "  frames of an earlier run in it (frame_NNNNN.png, nothing else) are removed first. PNGs\n"
+    "  are encoded on a second thread while the next frame is simulated and drawn; the summary\n"
+    "  adds the frame count, size, mean bytes per frame and frames per second. A progress line\n"
+    "  is shown only when stderr is a terminal.\n"
+    "Picture: the camera is fixed for the run: the scene's [view] if it has one, else its\n"
+    "  [world] bounds, else every body at the start with a margin. Dynamic balls are white,\n"
+    "  kinematic bodies light grey, static ones dark grey; the top line shows scene, frame,\n"
+    "  simulated time and method.\n"
+    "Video: rube run levels/physics/pool-break.toml --out out, then\n"
+    "  ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4\n"
+    "  (60 frames a second is real time for a 1/60 s time step and --every 1).\n"
+    "Without --out and without --no-render, the run is headless with a note on stderr;\n"
+    "  --no-render never starts a GL context.\n"
     "A bad scene is reported by its first error only; 'rube check' lists them all.\n"
-    "Rendering is not built yet: without --no-render the run is headless anyway, with a note.\n"
-    "Exit status: 0 done, 1 the run failed (trace not written, interrupted), 2 bad input.";
+    "Exit status: 0 done, 1 the run failed (trace or frame not written, no GL context,\n"
+    "  interrupted), 2 bad input (scene, options, trace or frame folder not creatable).";
 
 constexpr const char* kCheckFooter =
     "Every error is one line, file:line:col: message, so editors can jump to it. Unknown keys are\n"
@@ -42,6 +64,12 @@ constexpr const char* kMainFooter =
     "Scene files are TOML: see levels/physics/ for examples and game/scene-format.md for every key.\n"
     "Run 'rube run --help' or 'rube check --help' for a command's options.\n"
     "Exit status: 0 ok, 1 a run failed, 2 bad input or usage (every message is one line on stderr).";
+
+// Usage errors are one line on stderr, pointing at the help that explains the option.
+int usageError(const std::string& message, const std::string& help) {
+    std::cerr << "rube: " << message << " (see '" << help << "')\n";
+    return kBadInput;
+}
 
 // CLI11 messages are one line already; this keeps them so if a future version adds a line break.
 std::string oneLine(std::string text) {
@@ -58,11 +86,45 @@ std::string stepCount(const std::string& text) {
     return {};
 }
 
+// A whole number from 1 to a billion, for --every and --frames; `what` names the unit.
+CLI::Validator countFromOne(std::string what) {
+    return CLI::Validator(
+        [what](const std::string& text) -> std::string {
+            std::int64_t value = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (error != std::errc{} || end != text.data() + text.size() || value < 1 || value > 1'000'000'000)
+                return "expected a whole number of " + what + " from 1 to 1000000000, got '" + text + "'";
+            return {};
+        },
+        "");
+}
+
+// "WxH" with both sides from 1 to kMaxFrameSide; nothing when `text` is not that.
+std::optional<rube::render::FrameSize> parseFrameSize(const std::string& text) {
+    const auto side = [](const char* begin, const char* end) -> std::optional<int> {
+        int value = 0;
+        const auto [stop, error] = std::from_chars(begin, end, value);
+        if (error != std::errc{} || stop != end || value < 1 || value > rube::game::kMaxFrameSide) return std::nullopt;
+        return value;
+    };
+    const auto x = text.find('x');
+    if (x == std::string::npos) return std::nullopt;
+    const auto width = side(text.data(), text.data() + x);
+    const auto height = side(text.data() + x + 1, text.data() + text.size());
+    if (!width || !height) return std::nullopt;
+    return rube::render::FrameSize{*width, *height};
+}
+
+std::string frameSizeError(const std::string& text) {
+    if (parseFrameSize(text)) return {};
+    return "expected WxH in pixels, each from 1 to " + std::to_string(rube::game::kMaxFrameSide) + ", got '" + text + "'";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"rube: a greybox physics puzzle game of the Incredible Machine kind.\n"
-                 "Runs physics scenes headless and checks scene files.",
+                 "Runs physics scenes, renders them to PNG frames and checks scene files.",
                  "rube"};
     app.footer(kMainFooter);
     app.set_version_flag("--version", "rube " RUBE_VERSION);
@@ -71,10 +133,12 @@ int main(int argc, char** argv) {
 
     rube::game::RunOptions run;
     std::int64_t steps = 0;
-    CLI::App* runCommand = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write a CSV trace");
+    std::int64_t frames = 0;
+    std::string size = "1280x720";
+    CLI::App* runCommand = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
     runCommand->footer(kRunFooter);
     runCommand->add_option("scene", run.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
-    runCommand->add_flag("--no-render", run.noRender, "Run headless, without a window (the only mode for now)");
+    runCommand->add_flag("--no-render", run.noRender, "Run headless: no GL context and no frames (summary and --trace)");
     CLI::Option* stepsOption = runCommand->add_option("--steps", steps, "Number of time steps to simulate (0 or more)")
                                    ->type_name("N")
                                    ->check(CLI::Validator(stepCount, ""));
@@ -83,6 +147,27 @@ int main(int argc, char** argv) {
     runCommand->add_option("--method", run.method,
                            "Time-step method, overriding the scene's: discrete, turn-based, exact or solver")
         ->type_name("NAME");
+    // --out and the options that only mean something with it are checked after parsing, not
+    // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
+    CLI::Option* outOption =
+        runCommand->add_option("--out", run.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
+            ->type_name("DIR");
+    CLI::Option* everyOption = runCommand->add_option("--every", run.every, "Steps between frames (default 1: every step)")
+                                   ->type_name("K")
+                                   ->check(countFromOne("steps"));
+    CLI::Option* framesOption = runCommand->add_option("--frames", frames, "Frames to write, frame 0 included (default: steps / K + 1)")
+                                    ->type_name("N")
+                                    ->check(countFromOne("frames"));
+    const std::vector<CLI::Option*> frameOptions = {
+        everyOption,
+        framesOption,
+        runCommand->add_option("--size", size, "Frame size in pixels, each side 1 to 8192 (default 1280x720)")
+            ->type_name("WxH")
+            ->check(CLI::Validator(frameSizeError, "")),
+        runCommand->add_flag("--trails", run.trails, "Draw each dynamic ball's path over the last 2 s (debug key D)"),
+        runCommand->add_flag("--debug-impacts", run.debugImpacts,
+                             "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
+    };
 
     std::vector<std::string> files;
     CLI::App* checkCommand = app.add_subcommand("check", "Validate scene files and report every error as file:line:col: message");
@@ -102,12 +187,19 @@ int main(int argc, char** argv) {
         // Point at the help of the command that was being parsed, where the options are explained.
         const auto chosen = app.get_subcommands();
         const std::string help = chosen.empty() ? "rube --help" : "rube " + chosen.front()->get_name() + " --help";
-        std::cerr << "rube: " << oneLine(e.what()) << " (see '" << help << "')\n";
-        return kBadInput;
+        return usageError(oneLine(e.what()), help);
     }
 
     if (*runCommand) {
+        if (*outOption && run.noRender) return usageError("--no-render excludes --out", "rube run --help");
+        if (*outOption && run.out.empty()) return usageError("--out: expected a folder, got ''", "rube run --help");
+        for (const CLI::Option* option : frameOptions) {
+            if (*option && !*outOption) return usageError(option->get_name() + " requires --out", "rube run --help");
+        }
         if (*stepsOption) run.steps = steps;
+        if (*framesOption) run.frames = frames;
+        run.size = *parseFrameSize(size); // the validator has accepted it
+        run.progress = ::isatty(STDERR_FILENO) == 1;
         return rube::game::runScene(run, std::cout, std::cerr);
     }
     return rube::game::checkScenes(files, std::cout, std::cerr);

@@ -1,12 +1,17 @@
-// `rube run`: load, check the options, step the world, write the trace, print the summary.
+// `rube run`: load, check the options, step the world, write the trace and the frames, print the summary.
 #include "run_command.hpp"
 
+#include "frame_recorder.hpp"
 #include "scene_file.hpp"
+#include "scene_framing.hpp"
+#include "scene_view.hpp"
 #include "trace_writer.hpp"
 
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <limits>
+#include <memory>
 #include <ostream>
 
 namespace rube::game {
@@ -41,23 +46,48 @@ std::string hex16(std::uint64_t value) {
     return buffer;
 }
 
-void printSummary(std::ostream& out, const SceneDesc& scene, const World& world, double wallSeconds,
-                  const RunOptions& options, const TraceWriter& trace) {
+// Everything a run with --out needs besides the world: the recorder, the view and one draw
+// list reused for every frame.
+struct Recording {
+    std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<SceneView> view;
+    render::DrawList list;
+    std::int64_t total = 0; // frames the run will write
+    std::int64_t done = 0;  // frames queued so far; the next frame's number
+};
+
+void printSummary(std::ostream& out, const SceneDesc& scene, const World& world, double physicsSeconds,
+                  const RunOptions& options, const TraceWriter& trace, const RecordingStats* frames) {
     const StepStats& s = world.stats();
-    char seconds[64];
+    char text[160];
     out << "scene:            " << scene.name << '\n';
     out << "method:           " << methodName(world.def().method) << '\n';
     out << "steps:            " << s.steps << '\n';
-    std::snprintf(seconds, sizeof seconds, "%.6g s", world.time());
-    out << "simulated time:   " << seconds << '\n';
-    std::snprintf(seconds, sizeof seconds, "%.4g s (physics only)", wallSeconds);
-    out << "wall time:        " << seconds << '\n';
+    std::snprintf(text, sizeof text, "%.6g s", world.time());
+    out << "simulated time:   " << text << '\n';
+    std::snprintf(text, sizeof text, "%.4g s (physics only)", physicsSeconds);
+    out << "wall time:        " << text << '\n';
     out << "impacts:          " << s.impacts << '\n';
     out << "resting contacts: " << s.restingContacts << '\n';
     out << "caps hit:         " << s.capsHit << '\n';
     out << "escapes:          " << s.escapes << '\n';
     out << "state hash:       " << hex16(stateHash(world)) << '\n';
     if (!options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
+    if (frames) {
+        std::snprintf(text, sizeof text, "%lld of %dx%d, %.0f bytes per frame on average",
+                      static_cast<long long>(frames->frames), options.size.width, options.size.height,
+                      frames->bytesPerFrame());
+        out << "frames:           " << text << ", in " << options.out << '\n';
+        std::snprintf(text, sizeof text, "%.1f fps (wall clock: simulate, render and write)", frames->framesPerSecond());
+        out << "frame rate:       " << text << '\n';
+    }
+}
+
+// Steps the run takes: --steps; else enough for --frames; else the scene's duration.
+std::int64_t stepsOf(const RunOptions& options, const SceneDesc& scene) {
+    if (options.steps) return *options.steps;
+    if (options.frames) return (*options.frames - 1) * options.every;
+    return scene.defaultSteps();
 }
 
 } // namespace
@@ -78,8 +108,9 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return 2;
     }
     const SceneDesc& scene = *load.scene;
-    if (!options.noRender)
-        err << "rube run: note: rendering is not built yet, running headless as with --no-render\n";
+    const bool recording = !options.out.empty();
+    if (!recording && !options.noRender)
+        err << "rube run: note: no frames written without --out DIR (--no-render runs headless without this note)\n";
 
     TraceWriter trace;
     std::string error;
@@ -89,28 +120,76 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     World world = buildWorld(scene);
     if (method) world.setMethod(*method);
-    const std::int64_t steps = options.steps.value_or(scene.defaultSteps());
+    const std::int64_t steps = stepsOf(options, scene);
+    const std::int64_t every = options.every < 1 ? 1 : options.every;
+
+    // The folder is checked before GL starts, and both before the first step: a bad --out
+    // writes nothing (the trace's temporary file goes with `trace`).
+    Recording frames;
+    if (recording) {
+        try {
+            frames.recorder = std::make_unique<FrameRecorder>(options.out, options.size);
+        } catch (const OutputFolderError& e) {
+            err << "rube run: " << e.what() << '\n';
+            return 2;
+        } catch (const std::exception& e) {
+            err << "rube run: cannot render: " << e.what() << '\n';
+            return 1;
+        }
+        ViewOptions viewOptions;
+        viewOptions.trails = options.trails;
+        viewOptions.impacts = options.debugImpacts;
+        frames.view = std::make_unique<SceneView>(scene.name, world, sceneCamera(frameScene(scene, world), options.size),
+                                                  options.size, viewOptions);
+        frames.total = std::min(options.frames.value_or(std::numeric_limits<std::int64_t>::max()), steps / every + 1);
+    }
+    auto progress = std::make_unique<ProgressLine>(err, recording && options.progress, frames.total);
+    const auto recordFrame = [&] {
+        frames.view->draw(world, frames.done, frames.list);
+        frames.recorder->record(frames.list, frames.view->camera(), frames.done);
+        ++frames.done;
+        progress->update(frames.done, frames.recorder->elapsedSeconds());
+    };
 
     InterruptGuard guard;
     trace.writeState(world); // step 0: the initial state
     // The wall clock lives outside the simulation: it measures, and never feeds back into, the physics.
     std::chrono::steady_clock::duration physicsTime{};
-    for (std::int64_t i = 0; i < steps && !gInterrupted; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        world.step();
-        physicsTime += std::chrono::steady_clock::now() - start;
-        trace.writeState(world);
+    RecordingStats recorded;
+    try {
+        if (recording) recordFrame(); // frame 0: the initial state
+        for (std::int64_t i = 0; i < steps && !gInterrupted; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            world.step();
+            physicsTime += std::chrono::steady_clock::now() - start;
+            trace.writeState(world);
+            if (frames.done < frames.total) {
+                frames.view->afterStep(world);
+                if ((i + 1) % every == 0) recordFrame();
+            }
+        }
+        if (recording) recorded = frames.recorder->finish();
+    } catch (const std::exception& e) {
+        progress.reset();
+        trace.discard();
+        err << "rube run: " << e.what() << (options.trace.empty() ? "" : "; no trace written") << '\n';
+        return 1;
     }
+    progress.reset(); // wipes the progress line before anything else is printed
     if (gInterrupted) {
         trace.discard();
-        err << "rube run: interrupted after " << world.stats().steps << " steps; no trace written\n";
+        err << "rube run: interrupted after " << world.stats().steps << " steps; no trace written";
+        // The frames already written stay: each is whole (written under a temporary name, then renamed).
+        if (recording) err << "; " << recorded.frames << " frames written";
+        err << '\n';
         return 1;
     }
     if (!options.trace.empty() && !trace.commit(error)) {
         err << error << '\n';
         return 1;
     }
-    printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), options, trace);
+    printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), options, trace,
+                 recording ? &recorded : nullptr);
     if (world.stats().nonFinite) err << "rube run: warning: a body's position or velocity became NaN or infinite\n";
     return 0;
 }

@@ -1,5 +1,7 @@
 #pragma once
-/// `rube run`: simulate a scene headless, print a summary, optionally write the trace.
+/// `rube run`: simulate a scene, print a summary, optionally write the trace and PNG frames.
+
+#include "rube/render/camera.hpp"
 
 #include <cstdint>
 #include <iosfwd>
@@ -10,15 +12,26 @@ namespace rube::game {
 
 /// What `rube run` was asked to do.
 struct RunOptions {
-    std::string scene;                ///< the scene file
-    bool noRender = false;            ///< --no-render: headless on purpose (the only mode until a renderer exists)
-    std::optional<std::int64_t> steps; ///< --steps, else the scene's duration, else 600
-    std::string trace;                ///< --trace file, empty for none
-    std::string method;               ///< --method, empty for the scene's own
+    std::string scene;                 ///< the scene file
+    bool noRender = false;             ///< --no-render: headless on purpose, no GL context at all
+    std::optional<std::int64_t> steps; ///< --steps, else (frames - 1) x every with --frames, else the scene's duration, else 600
+    std::string trace;                 ///< --trace file, empty for none
+    std::string method;                ///< --method, empty for the scene's own
+    std::string out;                   ///< --out folder for frame_00000.png, ...; empty for no frames
+    std::int64_t every = 1;            ///< --every: steps between frames
+    std::optional<std::int64_t> frames; ///< --frames: how many frames at most, frame 0 included
+    render::FrameSize size{1280, 720}; ///< --size, pixels
+    bool trails = false;               ///< --trails: each dynamic body's recent path
+    bool debugImpacts = false;         ///< --debug-impacts: points of impact and collision normals
+    bool progress = false;             ///< show a progress line on `err` (only when it is a terminal)
 };
 
-/// Runs a scene and returns the exit status: 0 done, 1 the run failed (the trace could not be
-/// written, or it was interrupted), 2 bad input (unreadable scene, unknown method, trace not creatable).
+/// The largest frame side --size accepts, in pixels: 8192 x 8192 RGBA is already 256 MB.
+inline constexpr int kMaxFrameSide = 8192;
+
+/// Runs a scene and returns the exit status: 0 done, 1 the run failed (the trace or a frame could
+/// not be written, no GL context, or it was interrupted), 2 bad input (unreadable scene, unknown
+/// method, trace or frame folder not creatable).
 int runScene(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace rube::game

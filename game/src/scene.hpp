@@ -23,6 +23,7 @@ struct SceneDesc {
     std::string description;        ///< one sentence: what the scene demonstrates
     WorldDef world;                 ///< gravity, time step, method, bounds: the physics defaults unless set
     std::optional<double> duration; ///< seconds `rube run` simulates when no --steps is given
+    std::optional<Aabb> view;       ///< [view]: the region rendered frames show, else chosen from bounds or bodies
     std::vector<NamedPath> paths;    ///< in file order: index i is the World's path i
     std::vector<CircleDef> circles;  ///< in file order, [[circle_grid]] circles row by row from the bottom
     std::vector<SegmentDef> segments; ///< in file order

@@ -1,4 +1,4 @@
-// Scene files: the top level, [world] and [[path]]; the bodies are read in scene_bodies.cpp.
+// Scene files: the top level, [world], [view] and [[path]]; the bodies are read in scene_bodies.cpp.
 #include "scene_file.hpp"
 
 #include "scene_reading.hpp"
@@ -11,10 +11,11 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "world", "path", "circle", "circle_grid", "segment"};
+constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
                                            "substeps",  "max_events_per_step", "resting_speed", "duration"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
+constexpr std::string_view kViewKeys[] = {"min", "max"};
 constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
 
 // A world key written at the top level is a common slip; say where it goes instead of guessing a typo.
@@ -33,19 +34,32 @@ std::string syntaxMessage(std::string_view description) {
     return "syntax error: " + std::string(description);
 }
 
+// A box written as min and max corners, max above and to the right of min; `what` names it in errors.
+std::optional<Aabb> readBox(TableReader& box, std::string_view what) {
+    const auto min = box.vec2("min", Need::required);
+    const auto max = box.vec2("max", Need::required);
+    if (!min || !max) return std::nullopt;
+    if (!(min->x < max->x && min->y < max->y)) {
+        box.error(box.valuePlace("max"), std::string(what) + " max must be greater than min in both x and y, got min " +
+                                             formatPair(min->x, min->y) + " and max " + formatPair(max->x, max->y));
+        return std::nullopt;
+    }
+    return Aabb{*min, *max};
+}
+
 void readBounds(TableReader& world, SceneDesc& scene) {
     const toml::table* table = world.table("bounds", "{ min = [x, y], max = [x, y] }");
     if (!table) return;
     TableReader bounds(*table, "in world.bounds", kBoundsKeys, world.diagnostics());
-    const auto min = bounds.vec2("min", Need::required);
-    const auto max = bounds.vec2("max", Need::required);
-    if (!min || !max) return;
-    if (!(min->x < max->x && min->y < max->y)) {
-        bounds.error(bounds.valuePlace("max"), "bounds max must be greater than min in both x and y, got min " +
-                                                   formatPair(min->x, min->y) + " and max " + formatPair(max->x, max->y));
-        return;
-    }
-    scene.world.bounds = {*min, *max};
+    if (const auto box = readBox(bounds, "bounds")) scene.world.bounds = *box;
+}
+
+// [view] is for the camera only: the physics never sees it.
+void readView(TableReader& root, SceneDesc& scene) {
+    const toml::table* table = root.table("view", "[view] with min = [x, y] and max = [x, y]");
+    if (!table) return;
+    TableReader view(*table, "in [view]", kViewKeys, root.diagnostics());
+    scene.view = readBox(view, "view");
 }
 
 void readWorld(TableReader& root, SceneDesc& scene) {
@@ -172,6 +186,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     }
     scene.description = root.string("description").value_or("");
     readWorld(root, scene);
+    readView(root, scene);
     readPaths(root, reading);
     readCircles(root, reading);
     readCircleGrids(root, reading);

@@ -47,8 +47,39 @@ rube_cli_test("run steps from duration" "run|${RUBE_LEVELS}/projectile.toml|--no
               -DTRACE=${RUBE_CLI_OUT}/projectile.csv -DROWS=109 "-DSTDOUT_MATCH=steps: +108\n")
 rube_cli_test("run method override" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--steps|3|--method|discrete" 0
               "-DSTDOUT_MATCH=method: +discrete\n")
-rube_cli_test("run without --no-render notes it" "run|${RUBE_LEVELS}/bounce.toml|--steps|1" 0
-              "-DSTDERR_LINE=rube run: note: rendering is not built yet, running headless as with --no-render")
+rube_cli_test("run without --out or --no-render notes it" "run|${RUBE_LEVELS}/bounce.toml|--steps|1" 0
+              "-DSTDERR_LINE=rube run: note: no frames written without --out DIR (--no-render runs headless without this note)")
+
+# Frames: --out DIR writes frame_00000.png (the initial state) and one frame every --every steps.
+# Small frames keep these quick; the pictures themselves are the screenshot tests' business.
+set(frames ${RUBE_CLI_OUT}/frames)
+rube_cli_test("run --out writes --frames frames" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/five|--size|64x36|--frames|5" 0
+              -DFRAMES_DIR=${frames}/five -DFRAMES=5 -DSTDERR_EMPTY=ON
+              "-DSTDOUT_MATCH=steps: +4\n.*frames: +5 of 64x36, [0-9]+ bytes per frame on average, in ${frames}/five\nframe rate: +[0-9.]+ fps")
+rube_cli_test("run --out with --every writes steps / K + 1 frames" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/every|--size|32x18|--steps|10|--every|4" 0
+              -DFRAMES_DIR=${frames}/every -DFRAMES=3 "-DSTDOUT_MATCH=steps: +10\n")
+rube_cli_test("run --frames without --steps runs (N - 1) x K steps" "run|${RUBE_LEVELS}/projectile.toml|--out|${frames}/nk|--size|32x18|--frames|4|--every|3" 0
+              -DFRAMES_DIR=${frames}/nk -DFRAMES=4 "-DSTDOUT_MATCH=steps: +9\n")
+rube_cli_test("run --frames stops the frames, not the steps" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/cut|--size|32x18|--steps|20|--frames|2" 0
+              -DFRAMES_DIR=${frames}/cut -DFRAMES=2 "-DSTDOUT_MATCH=steps: +20\n")
+rube_cli_test("run --out replaces an earlier run's frames only" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/again|--size|32x18|--frames|2" 0
+              -DFRAMES_DIR=${frames}/again -DSEED_FRAMES=7 -DFRAMES=2)
+rube_cli_test("run --out into a file's place is status 2 and writes nothing"
+              "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/blocker/out|--trace|${frames}/blocked.csv" 2
+              -DBLOCKER=${frames}/blocker -DFRAMES_DIR=${frames}/blocker/out -DNO_FRAMES_DIR=ON
+              -DTRACE=${frames}/blocked.csv -DNO_TRACE=ON
+              "-DSTDERR_LINE=rube run: cannot write frames to ${frames}/blocker/out: Not a directory")
+foreach(size 0x720 wide 9000x100 640x -64x36)
+  rube_cli_test("usage bad size ${size}" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/size|--size|${size}" 2
+                -DFRAMES_DIR=${frames}/size -DNO_FRAMES_DIR=ON
+                "-DSTDERR_LINE=rube: --size: expected WxH in pixels, each from 1 to 8192, got '${size}' (see 'rube run --help')")
+endforeach()
+rube_cli_test("usage bad every" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/k|--every|0" 2
+              "-DSTDERR_LINE=rube: --every: expected a whole number of steps from 1 to 1000000000, got '0' (see 'rube run --help')")
+rube_cli_test("usage --out with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--out|${frames}/x" 2
+              "-DSTDERR_LINE=rube: --no-render excludes --out (see 'rube run --help')")
+rube_cli_test("usage --trails without --out" "run|${RUBE_LEVELS}/bounce.toml|--trails" 2
+              "-DSTDERR_LINE=rube: --trails requires --out (see 'rube run --help')")
 
 # Failed runs: status 2, one line, and no trace (nor a temporary) left behind.
 rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-key.toml|--no-render|--trace|${RUBE_CLI_OUT}/bad.csv" 2
@@ -71,9 +102,18 @@ rube_cli_test("usage unknown option" "check|${RUBE_LEVELS}/bounce.toml|--fast" 2
 # Help is for level designers and teachers: it exits 0 and names what they need.
 rube_cli_test("help" "--help" 0 "-DSTDOUT_MATCH=run .*check .*Exit status")
 rube_cli_test("help run" "run|--help" 0 "-DSTDOUT_MATCH=--steps .*--trace .*--method .*step,time,body,x,y,vx,vy,angle,omega,radius")
+rube_cli_test("help run explains frames" "run|--help" 0
+              "-DSTDOUT_MATCH=--out DIR .*--every K .*--frames N .*--size WxH .*--trails .*--debug-impacts .*frame_00000.png.*ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4")
 rube_cli_test("help check" "check|--help" 0 "-DSTDOUT_MATCH=file:line:col: message")
 
 # Determinism: two runs of the same scene write byte-identical traces and equal hashes.
 add_test(NAME "cli: same trace twice"
          COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DSTEPS=60
                  -DTRACE=${RUBE_CLI_OUT}/twice -P ${RUBE_CLI_DIR}/same_trace.cmake)
+
+# Rendering is deterministic: the same scene renders byte-identical PNGs twice, and with
+# llvmpipe on one thread (LP_NUM_THREADS=1) as on all of them. Named "screenshot: " so that
+# `ctest -R screenshot` runs it with the other tests that start a GL context.
+add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
+         COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
+                 -DOUT=${RUBE_CLI_OUT}/same-frames -P ${RUBE_CLI_DIR}/same_frames.cmake)

@@ -1,0 +1,107 @@
+#pragma once
+/// FrameRecorder: renders draw lists offscreen and writes them as numbered PNG frames, the PNG
+/// encoding running on the writer's thread while the caller simulates and draws the next frame.
+
+#include "rube/render/camera.hpp"
+#include "rube/render/draw_list.hpp"
+#include "rube/render/frame_writer.hpp"
+#include "rube/render/render_context.hpp"
+#include "rube/render/renderer.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace rube::game {
+
+/// The output folder cannot be created or written: bad input, reported before anything is drawn.
+struct OutputFolderError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// "frame_00042.png": five digits, the numbering ffmpeg reads with `-i frame_%05d.png`.
+std::string frameFileName(std::int64_t index);
+
+/// Whether `name` is one of ours: frame_ and five or more digits, .png.
+bool isFrameFileName(std::string_view name);
+
+/// Removes the frames (files named as frameFileName makes them) in `folder` and returns how many,
+/// so that a folder holds one run's frames only: ffmpeg's frame_%05d.png would otherwise carry
+/// on into the tail of a longer earlier run. Other files are left alone.
+std::int64_t removeFrames(const std::filesystem::path& folder);
+
+/// What a recording produced, for the run summary.
+struct RecordingStats {
+    std::int64_t frames = 0;   ///< PNG files written
+    std::int64_t bytes = 0;    ///< their total size
+    double wallSeconds = 0.0;  ///< from the recorder's creation to the last file on disk
+    /// Frames per second, end to end; 0 before anything was written.
+    double framesPerSecond() const { return wallSeconds > 0.0 ? static_cast<double>(frames) / wallSeconds : 0.0; }
+    /// Mean PNG size, bytes.
+    double bytesPerFrame() const { return frames > 0 ? static_cast<double>(bytes) / static_cast<double>(frames) : 0.0; }
+};
+
+/// Records frames into one folder. The folder is checked first (OutputFolderError), then the GL
+/// context is made (std::runtime_error), so a bad --out costs no GL start-up and writes nothing.
+class FrameRecorder {
+public:
+    /// Frames of `size` into `folder`, created if missing; the frames of an earlier run in it
+    /// are removed once the folder and the GL context are known to work.
+    FrameRecorder(const std::filesystem::path& folder, render::FrameSize size);
+    /// Writes the frames still queued (errors then are lost: call finish() to see them).
+    ~FrameRecorder();
+    FrameRecorder(const FrameRecorder&) = delete;
+    FrameRecorder& operator=(const FrameRecorder&) = delete;
+
+    /// Renders `list` through `camera` and queues it as frame number `index`; blocks only while
+    /// the writer's queue is full. Throws the writer's first error (a full disk, say).
+    void record(const render::DrawList& list, const render::Camera& camera, std::int64_t index);
+    /// Waits until every frame is on disk; throws the writer's first error.
+    RecordingStats finish();
+
+    /// Frames queued so far.
+    std::int64_t framesQueued() const { return queued_; }
+    /// Seconds since the recorder was made.
+    double elapsedSeconds() const;
+    /// Frames of an earlier run that the constructor removed.
+    std::int64_t staleFramesRemoved() const { return staleFramesRemoved_; }
+
+private:
+    std::chrono::steady_clock::time_point start_;
+    // Declared in this order so the writer is made (checking the folder) before GL starts, and
+    // the renderer is destroyed before its context and the writer drains last.
+    std::unique_ptr<render::FrameWriter> writer_;
+    std::unique_ptr<render::RenderContext> context_;
+    std::unique_ptr<render::Renderer> renderer_;
+    std::int64_t queued_ = 0;
+    std::int64_t staleFramesRemoved_ = 0;
+};
+
+/// A one-line progress display on a terminal: rewritten in place at most ten times a second,
+/// and wiped when done, so the summary that follows starts on a clean line.
+class ProgressLine {
+public:
+    /// Writes to `out` when `enabled`, otherwise never writes anything.
+    ProgressLine(std::ostream& out, bool enabled, std::int64_t totalFrames);
+    /// Wipes the line, if one was shown.
+    ~ProgressLine();
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    /// Shows that `frames` frames are done after `seconds` of wall clock.
+    void update(std::int64_t frames, double seconds);
+
+private:
+    std::ostream& out_;
+    bool enabled_;
+    bool shown_ = false;
+    std::int64_t total_;
+    std::chrono::steady_clock::time_point lastShown_{};
+};
+
+} // namespace rube::game

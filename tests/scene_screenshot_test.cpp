@@ -1,0 +1,107 @@
+// Scene screenshot tests: every physics scene in levels/physics/ is simulated to a chosen frame,
+// drawn by the game's SceneView exactly as `rube run --out` draws it, rendered offscreen
+// (OSMesa) at 640x360 and compared with its golden screenshots/<scene>_<frame>.png.
+// A missing golden fails and leaves the frame in the build tree's screenshot-failures/ to be
+// looked at; UPDATE_SCREENSHOTS=1 regenerates the goldens (look at each before committing).
+#include "scene_file.hpp"
+#include "scene_framing.hpp"
+#include "scene_view.hpp"
+
+#include "rube/render/render_context.hpp"
+#include "rube/render/renderer.hpp"
+#include "rube/render/screenshot.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+
+using namespace rube;
+using namespace rube::game;
+
+namespace {
+
+constexpr render::FrameSize kFrameSize{640, 360};
+
+// The golden frames: a frame where something is happening, and the overlays each scene shows
+// best (trails where paths matter, impact markers where impacts do).
+struct Golden {
+    const char* scene;
+    int frame;  // = steps taken, as with `rube run --every 1`
+    bool trails;
+    bool impacts;
+};
+constexpr Golden kGoldens[] = {
+    {"ball-stack", 120, false, false},   // t = 2 s: the column should still stand
+    {"bounce", 120, true, false},        // t = 2 s: on the way up after the first bounce
+    {"bullet", 1, true, true},           // the step that crosses the line: the impact and the way back
+    {"newtons-cradle", 61, false, true}, // just after the chain of impacts at t = 1 s
+    {"pile", 45, false, false},          // t = 0.75 s: the balls landing on the pile
+    {"pool-break", 20, true, true},      // t = 0.33 s: the break
+    {"projectile", 90, true, false},     // t = 1.5 s: past the top of the parabola
+    {"slope-rest", 60, true, true},      // t = 1 s: sliding, pressed onto the slope
+};
+
+// One context and renderer for the whole executable: making a GL context costs more than a test.
+render::Renderer& renderer() {
+    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize);
+    static render::Renderer instance(*context);
+    return instance;
+}
+
+render::Image renderGolden(const Golden& golden) {
+    const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_LEVELS_DIR) / (std::string(golden.scene) + ".toml"));
+    INFO((load.errors.empty() ? std::string("no errors") : load.errors.front().format()));
+    REQUIRE(load.ok());
+    World world = buildWorld(*load.scene);
+    ViewOptions options;
+    options.trails = golden.trails;
+    options.impacts = golden.impacts;
+    SceneView view(load.scene->name, world, sceneCamera(frameScene(*load.scene, world), kFrameSize), kFrameSize, options);
+    for (int step = 0; step < golden.frame; ++step) {
+        world.step();
+        view.afterStep(world);
+    }
+    render::DrawList list;
+    view.draw(world, golden.frame, list);
+    return renderer().render(list, view.camera());
+}
+
+void checkGoldens(std::string_view scene) {
+    int checked = 0;
+    for (const Golden& golden : kGoldens) {
+        if (golden.scene != scene) continue;
+        ++checked;
+        const auto goldenPath = std::filesystem::path(RUBE_SCREENSHOTS_DIR) / render::goldenFileName(scene, golden.frame);
+        const render::ScreenshotCheck check =
+            render::checkScreenshot(renderGolden(golden), goldenPath, RUBE_SCREENSHOT_FAILURES_DIR);
+        INFO(check.message);
+        CHECK(check.passed);
+    }
+    CHECK(checked > 0);
+}
+
+} // namespace
+
+TEST_CASE("every physics scene has a golden frame", "[screenshot][scene]") {
+    std::set<std::string> withGoldens;
+    for (const Golden& golden : kGoldens) withGoldens.insert(golden.scene);
+    for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
+        if (entry.path().extension() != ".toml") continue;
+        const std::string scene = entry.path().stem().string();
+        INFO(scene << " has no golden frame: add one to kGoldens in " << __FILE__);
+        CHECK(withGoldens.contains(scene));
+    }
+}
+
+// One test per scene, so that `ctest -R screenshot` names the scene that changed.
+TEST_CASE("ball-stack matches its golden frames", "[screenshot][scene]") { checkGoldens("ball-stack"); }
+TEST_CASE("bounce matches its golden frames", "[screenshot][scene]") { checkGoldens("bounce"); }
+TEST_CASE("bullet matches its golden frames", "[screenshot][scene]") { checkGoldens("bullet"); }
+TEST_CASE("newtons-cradle matches its golden frames", "[screenshot][scene]") { checkGoldens("newtons-cradle"); }
+TEST_CASE("pile matches its golden frames", "[screenshot][scene]") { checkGoldens("pile"); }
+TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { checkGoldens("pool-break"); }
+TEST_CASE("projectile matches its golden frames", "[screenshot][scene]") { checkGoldens("projectile"); }
+TEST_CASE("slope-rest matches its golden frames", "[screenshot][scene]") { checkGoldens("slope-rest"); }

@@ -2,6 +2,7 @@
 // impact): energy kept to round-off, parabolas followed exactly, no tunnelling at any speed,
 // momentum passed along a Newton's cradle, bounded work, and determinism.
 #include "rube/physics/world.hpp"
+#include "scene_builders.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -9,26 +10,12 @@
 #include <cmath>
 
 using namespace rube;
+using rube::test::line;
+using rube::test::ball;
 
 namespace {
 
 constexpr double kG = 9.81;
-
-SegmentDef line(Vec2 a, Vec2 b, double radius = 0.0) {
-    SegmentDef def;
-    def.a = a;
-    def.b = b;
-    def.radius = radius;
-    return def;
-}
-
-CircleDef ball(Vec2 position, Vec2 velocity, double radius) {
-    CircleDef def;
-    def.position = position;
-    def.velocity = velocity;
-    def.radius = radius;
-    return def;
-}
 
 // The bounce scene: a ball of radius 0.5 dropped from centre height 10 m onto a static floor, C = 1.
 World bounceScene() {

@@ -2,8 +2,9 @@
 // fails, shown failing, and the robust versions shown holding. Methods go through the public World API.
 #include "rube/physics/time_of_impact.hpp"
 #include "rube/physics/world.hpp"
+#include "scene_builders.hpp"
 
-#include "../engine/physics/src/resolve.hpp" // internal: the lecture loops below resolve by hand
+#include "resolve.hpp" // internal: the lecture loops below resolve by hand
 
 #include <catch2/catch.hpp>
 
@@ -11,19 +12,11 @@
 #include <cmath>
 
 using namespace rube;
+using rube::test::line;
 
 namespace {
 
 constexpr double kDt = 1.0 / 60;
-
-// A static line from a to b with rounded caps of `radius`.
-SegmentDef line(Vec2 a, Vec2 b, double radius = 0.0) {
-    SegmentDef def;
-    def.a = a;
-    def.b = b;
-    def.radius = radius;
-    return def;
-}
 
 WorldDef weightless(Method method) {
     WorldDef def;

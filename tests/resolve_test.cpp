@@ -1,6 +1,6 @@
 // Collision resolve (lecture 3): v' = u - C (v - u) along the normal, tangential velocity kept,
 // momentum conserved, walls as infinite mass; and the position reset.
-#include "../engine/physics/src/resolve.hpp" // internal: tests may reach inside, users may not
+#include "resolve.hpp" // internal: tests may reach inside, users may not
 
 #include <catch2/catch.hpp>
 

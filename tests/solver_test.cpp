@@ -1,6 +1,8 @@
 // The `solver` method through the public World API: the 1000-ball pile, bullets against thin and
 // moving shapes, resting stacks, momentum, restitution, impact records and determinism.
+#include "rube/physics/collision.hpp"
 #include "rube/physics/world.hpp"
+#include "scene_builders.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +13,7 @@
 #include <vector>
 
 using namespace rube;
+using rube::test::line;
 
 namespace {
 
@@ -21,20 +24,6 @@ WorldDef solverDef() {
 }
 
 /// A static line from a to b (radius 0, default material).
-SegmentDef line(Vec2 a, Vec2 b) {
-    SegmentDef s;
-    s.a = a;
-    s.b = b;
-    return s;
-}
-
-/// The distance from p to segment ab.
-double distanceToSegment(Vec2 p, Vec2 a, Vec2 b) {
-    const Vec2 ab = b - a;
-    const double t = std::clamp((p - a).dot(ab) / ab.lengthSquared(), 0.0, 1.0);
-    return p.distance(a + ab * t);
-}
-
 /// The largest overlap between any two circles and between any circle and segment.
 double largestOverlap(const World& world) {
     const auto circles = world.circles();
@@ -46,7 +35,7 @@ double largestOverlap(const World& world) {
             if (d2 < reach * reach) worst = std::max(worst, reach - std::sqrt(d2));
         }
         for (const Segment& s : world.segments())
-            worst = std::max(worst, circles[i].radius + s.radius - distanceToSegment(circles[i].position, s.a, s.b));
+            worst = std::max(worst, circles[i].radius + s.radius - circles[i].position.distance(closestPointOnSegment(circles[i].position, s.a, s.b)));
     }
     return worst;
 }

@@ -2,7 +2,7 @@
 // worked out by hand in the comments, and the root finder behind the accelerated cases.
 #include "rube/physics/time_of_impact.hpp"
 
-#include "../engine/physics/src/polynomial.hpp" // internal: tests may reach inside, users may not
+#include "polynomial.hpp" // internal: tests may reach inside, users may not
 
 #include <catch2/catch.hpp>
 

@@ -1,0 +1,89 @@
+// The Box2D 2.4.1 adapter (Debian's libbox2d-dev), written from its documented API. Box2D is
+// run as its manual recommends: 8 velocity and 3 position iterations, sleeping allowed.
+
+#include "sim.hpp"
+
+#include <box2d/box2d.h>
+
+#include <numbers>
+#include <vector>
+
+namespace bench {
+namespace {
+
+constexpr int kVelocityIterations = 8;
+constexpr int kPositionIterations = 3;
+
+// Box2D mixes restitution with max(a, b); rube and Chipmunk multiply. PreSolve may override a
+// contact's restitution, so the pair's C is the same product on every engine.
+class ProductRestitution final : public b2ContactListener {
+public:
+    void PreSolve(b2Contact* contact, const b2Manifold*) override {
+        contact->SetRestitution(contact->GetFixtureA()->GetRestitution() * contact->GetFixtureB()->GetRestitution());
+    }
+};
+
+b2Vec2 toB2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+
+class Box2dSim final : public Sim {
+public:
+    explicit Box2dSim(const WorldSpec& spec) : world_(toB2(spec.gravity)), timeStep_(static_cast<float>(spec.timeStep)) {
+        world_.SetContactListener(&listener_);
+    }
+
+    int addBall(const BallSpec& s) override {
+        b2BodyDef bodyDef;
+        bodyDef.type = b2_dynamicBody;
+        bodyDef.position = toB2(s.position);
+        bodyDef.linearVelocity = toB2(s.velocity);
+        bodyDef.bullet = s.fast;
+        b2Body* body = world_.CreateBody(&bodyDef);
+        b2CircleShape circle;
+        circle.m_radius = static_cast<float>(s.radius);
+        b2FixtureDef fixture;
+        fixture.shape = &circle;
+        // Density from the mass, so a ball weighs what the scene says: rho = m / (pi r^2).
+        fixture.density = static_cast<float>(s.mass / (std::numbers::pi * s.radius * s.radius));
+        fixture.restitution = static_cast<float>(s.bounciness);
+        fixture.friction = static_cast<float>(s.friction);
+        body->CreateFixture(&fixture);
+        balls_.push_back(body);
+        return static_cast<int>(balls_.size()) - 1;
+    }
+
+    void addLine(const LineSpec& s) override {
+        b2BodyDef bodyDef;
+        const bool moving = s.velocity.x != 0.0 || s.velocity.y != 0.0;
+        bodyDef.type = moving ? b2_kinematicBody : b2_staticBody;
+        bodyDef.linearVelocity = toB2(s.velocity);
+        b2Body* body = world_.CreateBody(&bodyDef);
+        // An edge carries Box2D's fixed skin (b2_polygonRadius); the line's own radius has no edge
+        // equivalent, so lines in the bench scenes are thin (radius 0).
+        b2EdgeShape edge;
+        edge.SetTwoSided(toB2(s.a), toB2(s.b));
+        b2FixtureDef fixture;
+        fixture.shape = &edge;
+        fixture.restitution = static_cast<float>(s.bounciness);
+        fixture.friction = static_cast<float>(s.friction);
+        body->CreateFixture(&fixture);
+    }
+
+    void step() override { world_.Step(timeStep_, kVelocityIterations, kPositionIterations); }
+    int ballCount() const override { return static_cast<int>(balls_.size()); }
+    BallState ball(int i) const override {
+        const b2Body* b = balls_[static_cast<std::size_t>(i)];
+        return {{b->GetPosition().x, b->GetPosition().y}, {b->GetLinearVelocity().x, b->GetLinearVelocity().y}};
+    }
+
+private:
+    ProductRestitution listener_;
+    b2World world_;
+    float timeStep_;
+    std::vector<b2Body*> balls_;
+};
+
+[[maybe_unused]] const bool registered = registerEngine(
+    {"box2d-2.4.1", EngineKind::peer, 10, [](const WorldSpec& spec) { return std::make_unique<Box2dSim>(spec); }});
+
+} // namespace
+} // namespace bench

@@ -1,0 +1,85 @@
+// The Chipmunk 7.0.3 adapter (Debian's libchipmunk-dev), written from its documented API.
+// Chipmunk is run with its defaults (10 iterations, 0.1 m collision slop, bounding-box tree).
+
+#include "sim.hpp"
+
+#include <chipmunk/chipmunk.h>
+
+#include <vector>
+
+namespace bench {
+namespace {
+
+cpVect toCp(Vec2 v) { return cpv(v.x, v.y); }
+
+class ChipmunkSim final : public Sim {
+public:
+    explicit ChipmunkSim(const WorldSpec& spec) : space_(cpSpaceNew()), timeStep_(spec.timeStep) {
+        cpSpaceSetGravity(space_, toCp(spec.gravity));
+    }
+    ~ChipmunkSim() override {
+        // cpSpaceFree frees neither bodies nor shapes: remove and free what this adapter made.
+        for (cpShape* shape : shapes_) {
+            cpSpaceRemoveShape(space_, shape);
+            cpShapeFree(shape);
+        }
+        for (cpBody* body : bodies_) {
+            cpSpaceRemoveBody(space_, body);
+            cpBodyFree(body);
+        }
+        cpSpaceFree(space_);
+    }
+    ChipmunkSim(const ChipmunkSim&) = delete;
+    ChipmunkSim& operator=(const ChipmunkSim&) = delete;
+
+    int addBall(const BallSpec& s) override {
+        cpBody* body = cpBodyNew(s.mass, cpMomentForCircle(s.mass, 0.0, s.radius, cpvzero));
+        cpBodySetPosition(body, toCp(s.position));
+        cpBodySetVelocity(body, toCp(s.velocity));
+        add(body);
+        cpShape* shape = cpCircleShapeNew(body, s.radius, cpvzero);
+        // Chipmunk multiplies both shapes' elasticity and friction, as rube does.
+        cpShapeSetElasticity(shape, s.bounciness);
+        cpShapeSetFriction(shape, s.friction);
+        add(shape);
+        balls_.push_back(body);
+        return static_cast<int>(balls_.size()) - 1;
+    }
+
+    void addLine(const LineSpec& s) override {
+        cpBody* body = cpSpaceGetStaticBody(space_);
+        if (s.velocity.x != 0.0 || s.velocity.y != 0.0) {
+            body = cpBodyNewKinematic();
+            cpBodySetVelocity(body, toCp(s.velocity));
+            add(body);
+        }
+        cpShape* shape = cpSegmentShapeNew(body, toCp(s.a), toCp(s.b), s.radius);
+        cpShapeSetElasticity(shape, s.bounciness);
+        cpShapeSetFriction(shape, s.friction);
+        add(shape);
+    }
+
+    void step() override { cpSpaceStep(space_, timeStep_); }
+    int ballCount() const override { return static_cast<int>(balls_.size()); }
+    BallState ball(int i) const override {
+        const cpBody* b = balls_[static_cast<std::size_t>(i)];
+        const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
+        return {{p.x, p.y}, {v.x, v.y}};
+    }
+
+private:
+    void add(cpBody* body) { bodies_.push_back(cpSpaceAddBody(space_, body)); }
+    void add(cpShape* shape) { shapes_.push_back(cpSpaceAddShape(space_, shape)); }
+
+    cpSpace* space_;
+    double timeStep_;
+    std::vector<cpBody*> balls_;
+    std::vector<cpBody*> bodies_;
+    std::vector<cpShape*> shapes_;
+};
+
+[[maybe_unused]] const bool registered = registerEngine(
+    {"chipmunk-7.0.3", EngineKind::peer, 11, [](const WorldSpec& spec) { return std::make_unique<ChipmunkSim>(spec); }});
+
+} // namespace
+} // namespace bench

@@ -1,0 +1,71 @@
+// The rube adapter: one registered engine per time-step method, all through the public World API.
+
+#include "sim.hpp"
+
+#include "rube/physics/world.hpp"
+
+#include <string>
+
+namespace bench {
+namespace {
+
+class RubeSim final : public Sim {
+public:
+    RubeSim(const WorldSpec& spec, rube::Method method) : world_(makeDef(spec, method)) {}
+
+    int addBall(const BallSpec& s) override {
+        rube::CircleDef def;
+        def.position = s.position;
+        def.velocity = s.velocity;
+        def.radius = s.radius;
+        def.mass = s.mass;
+        def.material = {s.bounciness, s.friction};
+        return world_.addCircle(def);
+    }
+
+    void addLine(const LineSpec& s) override {
+        rube::SegmentDef def;
+        def.a = s.a;
+        def.b = s.b;
+        def.radius = s.radius;
+        def.material = {s.bounciness, s.friction};
+        if (s.velocity.x != 0.0 || s.velocity.y != 0.0) {
+            // Constant velocity as a two-key path: far enough in time that no bench run reaches its end.
+            constexpr double kPathSeconds = 1e4;
+            def.path = world_.addPath({{{0.0, {}}, {kPathSeconds, s.velocity * kPathSeconds}}, false});
+        }
+        world_.addSegment(def);
+    }
+
+    void step() override { world_.step(); }
+    int ballCount() const override { return static_cast<int>(world_.circles().size()); }
+    BallState ball(int i) const override {
+        const auto& c = world_.circles()[static_cast<std::size_t>(i)];
+        return {c.position, c.velocity};
+    }
+    std::int64_t capsHit() const override { return world_.stats().capsHit; }
+
+private:
+    static rube::WorldDef makeDef(const WorldSpec& spec, rube::Method method) {
+        rube::WorldDef def; // defaults for the rest (substeps 8, event cap 4096): as a level gets them
+        def.gravity = spec.gravity;
+        def.timeStep = spec.timeStep;
+        def.method = method;
+        return def;
+    }
+
+    rube::World world_;
+};
+
+Engine rubeEngine(rube::Method method, int order) {
+    return {"rube-" + std::string(rube::methodName(method)), EngineKind::rubeMethod, order,
+            [method](const WorldSpec& spec) { return std::make_unique<RubeSim>(spec, method); }};
+}
+
+[[maybe_unused]] const bool registered = registerEngine(rubeEngine(rube::Method::discrete, 0)) &&
+                                         registerEngine(rubeEngine(rube::Method::turnBased, 1)) &&
+                                         registerEngine(rubeEngine(rube::Method::exact, 2)) &&
+                                         registerEngine(rubeEngine(rube::Method::solver, 3));
+
+} // namespace
+} // namespace bench

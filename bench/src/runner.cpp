@@ -1,0 +1,98 @@
+// The runner. Measuring and timing are separate runs of the same deterministic scene, so no
+// measurement (overlap sweeps, energy, reference distances) ever lands inside the timed loop.
+
+#include "runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::unique_ptr<Sim> buildSim(const Scene& scene, const Engine& engine, double timeStep, const SceneSize& size) {
+    auto sim = engine.make({scene.gravity, timeStep});
+    scene.build(*sim, size);
+    return sim;
+}
+
+bool inside(const Scene& scene, Vec2 p) {
+    return p.x >= scene.boundsMin.x && p.x <= scene.boundsMax.x && p.y >= scene.boundsMin.y && p.y <= scene.boundsMax.y;
+}
+
+// The measurement run: the probe and the stability flags look at the world after every step.
+void measure(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, Row& row) {
+    auto sim = buildSim(scene, engine, timeStep, options.size);
+    auto probe = scene.probe(options.size, timeStep);
+    row.bodies = sim->ballCount(); // known even if the run times out
+    std::vector<std::uint8_t> escaped(static_cast<std::size_t>(sim->ballCount()), 0);
+    const auto start = Clock::now();
+    for (int step = 1; step <= row.steps; ++step) {
+        sim->step();
+        probe->observe(*sim, step, step * timeStep);
+        for (int i = 0; i < sim->ballCount(); ++i) {
+            const BallState b = sim->ball(i);
+            if (!rube::isFinite(b.position) || !rube::isFinite(b.velocity)) row.nonFinite = true;
+            else if (!escaped[static_cast<std::size_t>(i)] && !inside(scene, b.position)) {
+                escaped[static_cast<std::size_t>(i)] = 1;
+                ++row.escapes;
+            }
+        }
+        if (std::chrono::duration<double>(Clock::now() - start).count() > options.runTimeLimit) {
+            row.timeout = true; // an engine stuck on this scene must not stall the whole bench
+            return;
+        }
+    }
+    row.metrics = probe->finish(*sim);
+    row.capsHit = sim->capsHit();
+
+}
+
+// One timed run: building the world is outside the clock, the step loop is all that is inside it.
+double timedRun(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, int steps) {
+    auto sim = buildSim(scene, engine, timeStep, options.size);
+    const auto start = Clock::now();
+    for (int step = 0; step < steps; ++step) sim->step();
+    const auto stop = Clock::now();
+    return std::chrono::duration<double>(stop - start).count();
+}
+
+} // namespace
+
+Row runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options) {
+    Row row;
+    row.scene = scene.name;
+    row.engine = engine.name;
+    row.peer = engine.kind == EngineKind::peer;
+    row.errorName = scene.errorName;
+    row.error2Name = scene.error2Name;
+    row.timeStep = timeStep;
+    row.steps = std::max(1, static_cast<int>(std::lround(scene.duration(options.size) / timeStep)));
+
+    measure(scene, engine, timeStep, options, row);
+    if (row.timeout) return row;
+
+    std::vector<double> seconds{timedRun(scene, engine, timeStep, options, row.steps)};
+    const double first = seconds.front();
+    const auto more = [&] {
+        const int n = static_cast<int>(seconds.size());
+        if (n >= options.maxRepeats || first > options.slowRun) return false;
+        return n < options.minRepeats || first * (n + 1) <= options.repeatBudget;
+    };
+    while (more()) seconds.push_back(timedRun(scene, engine, timeStep, options, row.steps));
+    // The median: one run disturbed by another process's compile does not move it.
+    std::sort(seconds.begin(), seconds.end());
+    const std::size_t n = seconds.size();
+    const double median = n % 2 == 1 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+
+    row.repeats = static_cast<int>(n);
+    row.msPerStep = 1e3 * median / row.steps;
+    row.usPerBodyStep = row.bodies > 0 ? 1e6 * median / (static_cast<double>(row.steps) * row.bodies) : 0.0;
+    row.msPerSimSecond = row.msPerStep / timeStep;
+    return row;
+}
+
+} // namespace bench

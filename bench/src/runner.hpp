@@ -1,0 +1,37 @@
+#pragma once
+/// The runner: one scene on one engine at one time step, timed and measured in separate runs.
+
+#include "scene.hpp"
+
+#include <string>
+
+namespace bench {
+
+/// How hard to try: repeats of the timed run and a wall-clock guard per run.
+struct RunOptions {
+    SceneSize size;
+    int minRepeats = 3;          ///< timed runs always made, unless one run is slower than slowRun
+    int maxRepeats = 5;          ///< the timed run is repeated up to this many times; the median is kept
+    double repeatBudget = 3.0;   ///< seconds: no repeats past minRepeats once the runs would take this long
+    double slowRun = 4.0;        ///< seconds: a run this slow is timed once (a slow method must not eat the budget)
+    double runTimeLimit = 8.0;   ///< seconds: a measurement run past this is abandoned (flagged "timeout")
+};
+
+/// One CSV row: what one scene cost and how wrong it was on one engine at one time step.
+struct Row {
+    std::string scene, engine, errorName, error2Name;
+    bool peer = false;
+    double timeStep = 0.0;
+    int bodies = 0, steps = 0, repeats = 0;
+    double msPerStep = 0.0, usPerBodyStep = 0.0, msPerSimSecond = 0.0;
+    Metrics metrics;
+    std::int64_t capsHit = 0;
+    int escapes = 0;
+    bool nonFinite = false, timeout = false;
+};
+
+/// Runs `scene` on `engine`: first a measurement run (the probe sees every step), then the
+/// timed runs, which are the bare step loop with steady_clock around it and nothing else.
+Row runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options);
+
+} // namespace bench

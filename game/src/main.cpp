@@ -138,6 +138,8 @@ int main(int argc, char** argv) {
     CLI::App* runCommand = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
     runCommand->footer(kRunFooter);
     runCommand->add_option("scene", run.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
+    runCommand->add_option("--script", run.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
+        ->type_name("FILE");
     runCommand->add_flag("--no-render", run.noRender, "Run headless: no GL context and no frames (summary and --trace)");
     CLI::Option* stepsOption = runCommand->add_option("--steps", steps, "Number of time steps to simulate (0 or more)")
                                    ->type_name("N")
@@ -198,6 +200,8 @@ int main(int argc, char** argv) {
         }
         if (*stepsOption) run.steps = steps;
         if (*framesOption) run.frames = frames;
+        run.everyGiven = static_cast<bool>(*everyOption);
+        run.sizeGiven = static_cast<bool>(*frameOptions[2]);
         run.size = *parseFrameSize(size); // the validator has accepted it
         run.progress = ::isatty(STDERR_FILENO) == 1;
         return rube::game::runScene(run, std::cout, std::cerr);

@@ -2,6 +2,7 @@
 #include "run_command.hpp"
 
 #include "frame_recorder.hpp"
+#include "play_command.hpp"
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
 #include "scene_view.hpp"
@@ -108,6 +109,8 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return 2;
     }
     const SceneDesc& scene = *load.scene;
+    // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
+    if (scene.level.isLevel() || !options.script.empty()) return playLevel(options, scene, out, err);
     const bool recording = !options.out.empty();
     if (!recording && !options.noRender)
         err << "rube run: note: no frames written without --out DIR (--no-render runs headless without this note)\n";

@@ -13,6 +13,9 @@ namespace rube::game {
 /// What `rube run` was asked to do.
 struct RunOptions {
     std::string scene;                 ///< the scene file
+    std::string script;                ///< --script: a level's scripted playthrough, empty for none
+    bool everyGiven = false;           ///< --every was given (it then overrides a script's capture)
+    bool sizeGiven = false;            ///< --size was given (it then overrides a script's capture)
     bool noRender = false;             ///< --no-render: headless on purpose, no GL context at all
     std::optional<std::int64_t> steps; ///< --steps, else (frames - 1) x every with --frames, else the scene's duration, else 600
     std::string trace;                 ///< --trace file, empty for none

@@ -1,6 +1,8 @@
 #pragma once
 /// Scene: what a scene file describes, held game-side, and how it becomes a physics World.
 
+#include "level.hpp"
+
 #include "rube/physics/world.hpp"
 
 #include <cstdint>
@@ -27,6 +29,9 @@ struct SceneDesc {
     std::vector<NamedPath> paths;    ///< in file order: index i is the World's path i
     std::vector<CircleDef> circles;  ///< in file order, [[circle_grid]] circles row by row from the bottom
     std::vector<SegmentDef> segments; ///< in file order
+    std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
+    std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
+    LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.
     std::int64_t defaultSteps() const;

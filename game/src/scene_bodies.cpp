@@ -11,6 +11,8 @@ constexpr std::string_view kCircleKeys[] = {"position", "velocity", "radius", "m
 constexpr std::string_view kGridKeys[] = {"origin", "columns", "rows", "spacing", "stagger", "velocity", "radius",
                                           "mass", "bounciness", "friction", "motion", "path"};
 constexpr std::string_view kSegmentKeys[] = {"a", "b", "radius", "bounciness", "friction", "path"};
+// A name is how goals and scripts refer to a body; it is not offered in a physics scene's key lists.
+constexpr std::string_view kNameKey[] = {"name"};
 constexpr std::string_view kMotionNames[] = {"dynamic", "kinematic", "static"};
 constexpr Motion kMotions[] = {Motion::dynamic, Motion::kinematic, Motion::fixed};
 
@@ -48,10 +50,11 @@ CircleDef readCircleFields(TableReader& table, SceneReading& reading) {
 }
 
 void readCircle(const toml::table& table, SceneReading& reading) {
-    TableReader circle(table, "in [[circle]]", kCircleKeys, reading.diag);
+    TableReader circle(table, "in [[circle]]", kCircleKeys, reading.diag, {}, kNameKey);
     const auto position = circle.vec2("position", Need::required);
     CircleDef def = readCircleFields(circle, reading);
     def.position = position.value_or(Vec2{});
+    reading.scene.circleNames.push_back(readBodyName(circle, reading));
     reading.scene.circles.push_back(def);
 }
 
@@ -85,17 +88,19 @@ void readCircleGrid(const toml::table& table, SceneReading& reading) {
             circle.position = *origin + Vec2{static_cast<double>(column) * spacing->x + shift,
                                              static_cast<double>(row) * spacing->y};
             reading.scene.circles.push_back(circle);
+            reading.scene.circleNames.emplace_back();
         }
     }
 }
 
 void readSegment(const toml::table& table, SceneReading& reading) {
-    TableReader segment(table, "in [[segment]]", kSegmentKeys, reading.diag);
+    TableReader segment(table, "in [[segment]]", kSegmentKeys, reading.diag, {}, kNameKey);
     SegmentDef def;
     const auto a = segment.vec2("a", Need::required);
     const auto b = segment.vec2("b", Need::required);
     if (const auto r = segment.number("radius", NumberRange::nonNegative())) def.radius = *r;
     def.material = readMaterial(segment);
+    const std::string name = readBodyName(segment, reading);
     if (const auto path = readPathReference(segment, reading)) def.path = *path;
     if (a && b && *a == *b) {
         // A segment of zero length has no direction, so no normal to bounce off.
@@ -105,6 +110,7 @@ void readSegment(const toml::table& table, SceneReading& reading) {
     def.a = a.value_or(Vec2{});
     def.b = b.value_or(Vec2{1.0, 0.0});
     reading.scene.segments.push_back(def);
+    reading.scene.segmentNames.push_back(name);
 }
 
 } // namespace

@@ -12,6 +12,8 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment"};
+// The level's tables: accepted everywhere, but not offered in a physics scene's key list.
+constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
                                            "substeps",  "max_events_per_step", "resting_speed", "duration"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
@@ -178,8 +180,8 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
         return {std::nullopt, diag.sorted()};
     }
     SceneDesc scene;
-    SceneReading reading{diag, scene, {}};
-    TableReader root(document, "at the top level", kTopKeys, diag, kTopHomes);
+    SceneReading reading{diag, scene, {}, {}};
+    TableReader root(document, "at the top level", kTopKeys, diag, kTopHomes, kLevelKeys);
     if (const auto name = root.string("name", Need::required)) {
         if (name->empty()) root.error(root.valuePlace("name"), "name must not be empty");
         scene.name = *name;
@@ -191,6 +193,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     readCircles(root, reading);
     readCircleGrids(root, reading);
     readSegments(root, reading);
+    readLevel(root, reading);
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     return {std::move(scene), {}};
 }

@@ -15,6 +15,7 @@ struct SceneReading {
     Diagnostics& diag; ///< where every reader reports
     SceneDesc& scene;  ///< what the readers fill in
     std::map<std::string, int, std::less<>> pathIndex; ///< path name -> index in scene.paths
+    std::map<std::string, SourcePlace, std::less<>> names; ///< every body and item name -> where it was defined
 };
 
 /// Reads every [[circle]] of the file into scene.circles.
@@ -23,6 +24,12 @@ void readCircles(TableReader& root, SceneReading& reading);
 void readCircleGrids(TableReader& root, SceneReading& reading);
 /// Reads every [[segment]] of the file into scene.segments.
 void readSegments(TableReader& root, SceneReading& reading);
+
+/// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.
+void readLevel(TableReader& root, SceneReading& reading);
+
+/// Reads an optional `name` key and registers it, reporting an empty or repeated name; "" when absent.
+std::string readBodyName(TableReader& table, SceneReading& reading, Need need = Need::optional);
 
 /// The index of the path a body's `path` key names, reporting an unknown name (with the
 /// closest defined name) at the key; nothing when the key is absent or wrong.

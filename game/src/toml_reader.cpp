@@ -53,11 +53,12 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
 }
 
 TableReader::TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known,
-                         Diagnostics& diag, std::span<const KeyHome> homes)
+                         Diagnostics& diag, std::span<const KeyHome> homes, std::span<const std::string_view> unlisted)
     : table_(table), where_(std::move(where)), diag_(diag) {
     for (auto&& [key, value] : table_) {
         const std::string_view name = key.str();
         if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+        if (std::find(unlisted.begin(), unlisted.end(), name) != unlisted.end()) continue;
         std::string message = "unknown key '" + std::string(name) + "' " + where_;
         const auto home = std::find_if(homes.begin(), homes.end(), [&](const KeyHome& h) { return h.key == name; });
         if (home != homes.end()) message += " (it belongs in " + std::string(home->home) + ")";

@@ -62,9 +62,10 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
 /// out of range, or a missing required key, and returns nothing in those cases.
 class TableReader {
 public:
-    /// `where` ends the messages: "in [[circle]]", "in [world]", "at the top level".
+    /// `where` ends the messages: "in [[circle]]", "in [world]", "at the top level". `unlisted` keys
+    /// are accepted but not offered in "known keys" lists (the level additions to physics tables).
     TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known,
-                Diagnostics& diag, std::span<const KeyHome> homes = {});
+                Diagnostics& diag, std::span<const KeyHome> homes = {}, std::span<const std::string_view> unlisted = {});
 
     /// The value under `key`, or null.
     const toml::node* find(std::string_view key) const { return table_.get(key); }

@@ -117,3 +117,15 @@ add_test(NAME "cli: same trace twice"
 add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
          COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
                  -DOUT=${RUBE_CLI_OUT}/same-frames -P ${RUBE_CLI_DIR}/same_frames.cmake)
+
+# Levels: a solution reaches the goal (0), the level as it stands does not (1), a bad placement
+# is bad input (2) with the script's file:line:col.
+set(RUBE_GAME_LEVELS ${PROJECT_SOURCE_DIR}/levels)
+rube_cli_test("level ramp solved by its script" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml" 0
+              "-DSTDOUT_MATCH=goal: +reached at frame 266\n")
+rube_cli_test("level ramp unsolved as it stands" "run|${RUBE_GAME_LEVELS}/ramp.toml" 1
+              "-DSTDERR_LINE=rube run: goal not reached: hit the flag with the ball")
+rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml" 2
+              "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml:3:1: placement refused: ramp at [4, 2.5] is not wholly inside a placement zone (it spans [2.45, 2.45] to [5.55, 2.55])")
+rube_cli_test("level script with an unknown cannon" "run|${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
+              "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")

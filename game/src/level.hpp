@@ -1,0 +1,98 @@
+#pragma once
+/// Level: what a level file adds to a scene — items of a kind, the inventory, placement zones and
+/// the goal. One format, one parser: a physics scene is a level without any of these.
+
+#include "scene_errors.hpp"
+
+#include "rube/physics/world.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// The kinds of item, in the order their names are listed in messages.
+enum class ItemKind : std::uint8_t { heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switchItem };
+
+/// How a bomb goes off.
+enum class Trigger : std::uint8_t { timer, impact, switchHit };
+
+/// One item: a fixed part of the level, or one the player placed. Angles are radians here
+/// (files write degrees); sizes are the kind's defaults unless the file set them.
+struct ItemDesc {
+    std::string name;            ///< unique among the level's names; may be empty for balls and planks
+    ItemKind kind = ItemKind::heavy;
+    Vec2 position;               ///< centre; a bucket's is the middle of its floor
+    double angle = 0.0;          ///< planks and ramps: tilt; cannons: aim (radians, counter-clockwise from +x)
+    double size = 0.0;           ///< radius of balls, bumpers, targets, switches, bombs; length of planks; width of buckets
+    double height = 0.0;         ///< bucket walls, m
+    Vec2 velocity;               ///< balls: initial velocity, m/s
+    double speed = 0.0;          ///< cannon: muzzle speed, m/s
+    ItemKind ammo = ItemKind::heavy; ///< cannon: the ball kind it shoots
+    std::optional<double> fireAt;    ///< cannon: fires by itself at this time, s
+    double blastRadius = 0.0;    ///< bomb: bodies whose centre is closer are pushed, m
+    double strength = 0.0;       ///< bomb: impulse at the centre, N s
+    Trigger trigger = Trigger::impact; ///< bomb: what sets it off
+    double fuse = 0.0;           ///< bomb with a timer: seconds from the start
+    std::string triggers;        ///< switch: the name of the cannon or bomb it sets off
+    int path = -1;               ///< target: index of the [[path]] it follows, or -1 (still)
+    SourcePlace place;           ///< where the file wrote it, for messages about it
+};
+
+/// A rectangle where the player may place items.
+struct Zone {
+    Aabb box;          ///< the area: a placed item must lie wholly inside it
+    SourcePlace place; ///< where the file wrote it
+};
+
+/// What wins the level.
+enum class GoalKind : std::uint8_t { targetHit, ballInBucket, allTargets };
+
+/// The goal: its text for the HUD, the condition and an optional time limit.
+struct Goal {
+    std::string text;              ///< what the player is told
+    GoalKind kind = GoalKind::targetHit;
+    std::string item;              ///< the target (targetHit) or bucket (ballInBucket)
+    std::optional<double> timeLimit; ///< seconds; the goal counts only when reached by then
+};
+
+/// Everything a level adds to a scene.
+struct LevelDesc {
+    std::vector<ItemDesc> items;                 ///< fixed parts, in file order
+    std::map<std::string, int, std::less<>> inventory; ///< placeable kind name -> how many
+    std::vector<Zone> zones;                     ///< where placements may go
+    std::optional<Goal> goal;                    ///< absent for plain physics scenes
+    /// True when the file used any level feature, so `rube run` plays it as a level.
+    bool isLevel() const { return goal.has_value() || !items.empty() || !inventory.empty() || !zones.empty(); }
+    /// The index of the item called `name`, or -1.
+    int find(std::string_view name) const;
+};
+
+/// The kind's name as files spell it: "heavy", ..., "switch".
+std::string_view itemKindName(ItemKind kind);
+/// Every kind, in the order of the enum.
+inline constexpr ItemKind kAllItemKinds[] = {ItemKind::heavy, ItemKind::bouncy, ItemKind::steel, ItemKind::balloon,
+                                             ItemKind::plank, ItemKind::ramp,   ItemKind::bumper, ItemKind::cannon,
+                                             ItemKind::bomb,  ItemKind::target, ItemKind::bucket, ItemKind::switchItem};
+/// True for the kinds that are one dynamic ball.
+bool isBall(ItemKind kind);
+/// True for the kinds a player may place from the inventory.
+bool isPlaceable(ItemKind kind);
+/// An item of `kind` at `position` with every size and property at the kind's default.
+ItemDesc defaultItem(ItemKind kind, Vec2 position);
+
+/// The physics bodies one item adds: nothing for a cannon, one circle for balls, bumpers, bombs,
+/// targets and switches, one segment for planks and ramps, three segments for a bucket.
+struct ItemBodies {
+    std::vector<CircleDef> circles;   ///< in order
+    std::vector<SegmentDef> segments; ///< in order
+};
+/// The bodies of `item`.
+ItemBodies itemBodies(const ItemDesc& item);
+/// The box around everything `item` occupies, for placement checks.
+Aabb itemExtent(const ItemDesc& item);
+
+} // namespace rube::game

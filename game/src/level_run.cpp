@@ -1,0 +1,222 @@
+// LevelRun: the game's rules on top of the physics. The physics reports impacts; this decides
+// what they mean (a target hit, a switch pressed, a bomb touched) and acts on it between steps.
+#include "level_run.hpp"
+
+#include "rube/physics/explosion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rube::game {
+
+namespace {
+
+// A balloon is lifted by 2 |g| per second squared, so it rises at g: the effective gravity -g.
+// The physics has one gravity for all bodies, so the lift is added to its velocity each step.
+constexpr double kBalloonLift = 2.0;
+// A ball counts as at rest in a bucket below this speed ...
+constexpr double kRestSpeed = 0.3; // m/s
+// ... held for this long, so a ball bouncing through the bucket's middle does not count.
+constexpr double kRestSeconds = 0.5;
+// A path's velocity is its offset's change over this step, s (paths are straight between keys).
+constexpr double kPathProbe = 1e-3;
+
+} // namespace
+
+LevelRun::LevelRun(const SceneDesc& scene, const std::vector<Placement>& placements)
+    : scene_(scene), world_(buildWorld(scene)) {
+    circleItem_.assign(world_.circles().size(), -1);
+    projectile_.assign(world_.circles().size(), 0);
+    for (const ItemDesc& item : scene.level.items) addItem(item);
+    for (const Placement& p : placements) addItem(placedItem(p));
+}
+
+void LevelRun::addItem(const ItemDesc& item) {
+    ItemState state;
+    state.aim = item.angle;
+    const ItemBodies bodies = itemBodies(item);
+    for (const CircleDef& c : bodies.circles) {
+        const int index = world_.addCircle(c);
+        if (state.firstCircle < 0) state.firstCircle = index;
+        circleItem_.push_back(static_cast<int>(items_.size()));
+        projectile_.push_back(0);
+    }
+    for (const SegmentDef& s : bodies.segments) {
+        const int index = world_.addSegment(s);
+        if (state.firstSegment < 0) state.firstSegment = index;
+    }
+    items_.push_back(item);
+    states_.push_back(state);
+}
+
+int LevelRun::find(std::string_view name) const {
+    for (std::size_t i = 0; i < items_.size(); ++i)
+        if (!name.empty() && items_[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+bool LevelRun::isProjectile(int circle) const { return projectile_[static_cast<std::size_t>(circle)] != 0; }
+
+bool LevelRun::isBalloon(int circle) const {
+    const int item = circleItem_[static_cast<std::size_t>(circle)];
+    return item >= 0 && items_[static_cast<std::size_t>(item)].kind == ItemKind::balloon;
+}
+
+Vec2 LevelRun::itemPosition(int item) const {
+    const ItemState& state = states_[static_cast<std::size_t>(item)];
+    if (state.firstCircle >= 0) return world_.circles()[static_cast<std::size_t>(state.firstCircle)].position;
+    return items_[static_cast<std::size_t>(item)].position;
+}
+
+Vec2 LevelRun::itemVelocity(int item) const {
+    const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
+    if (desc.path >= 0) {
+        const KinematicPath& path = world_.paths()[static_cast<std::size_t>(desc.path)];
+        return (path.offsetAt(world_.time() + kPathProbe) - path.offsetAt(world_.time())) / kPathProbe;
+    }
+    const ItemState& state = states_[static_cast<std::size_t>(item)];
+    if (state.firstCircle >= 0) return world_.circles()[static_cast<std::size_t>(state.firstCircle)].velocity;
+    return {};
+}
+
+Vec2 LevelRun::launchVelocity(int cannon) const {
+    return aimInDirection(states_[static_cast<std::size_t>(cannon)].aim, items_[static_cast<std::size_t>(cannon)].speed).velocity;
+}
+
+void LevelRun::aim(int cannon, double angle) { states_[static_cast<std::size_t>(cannon)].aim = angle; }
+
+std::string LevelRun::aimAtPoint(int cannon, Vec2 point, bool highArc) {
+    const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
+    const GravityShot shot = aimGravityShot(item.position, point, item.speed, world_.def().gravity);
+    if (!shot.reachable()) return "cannon '" + item.name + "' cannot reach " + formatPair(point.x, point.y) + ": " + shot.reason;
+    // At exactly the minimum speed there is one arc, reported as the low one.
+    const Arc& arc = highArc && shot.highArc ? *shot.highArc : *shot.lowArc;
+    aim(cannon, arc.shot.angle);
+    return "";
+}
+
+std::string LevelRun::aimAtItem(int cannon, int target, bool highArc) {
+    const Vec2 velocity = itemVelocity(target);
+    if (velocity == Vec2{}) return aimAtPoint(cannon, itemPosition(target), highArc);
+    const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
+    const auto intercept = leadMovingTarget(item.position, itemPosition(target), velocity, item.speed, world_.def().gravity);
+    if (!intercept)
+        return "cannon '" + item.name + "' cannot catch '" + items_[static_cast<std::size_t>(target)].name +
+               "' at speed " + formatNumber(item.speed) + " m/s";
+    aim(cannon, intercept->shot.angle);
+    return "";
+}
+
+void LevelRun::fire(int cannon) {
+    ItemState& state = states_[static_cast<std::size_t>(cannon)];
+    const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
+    ItemDesc ball = defaultItem(item.ammo, item.position);
+    CircleDef def = itemBodies(ball).circles.front();
+    def.velocity = launchVelocity(cannon);
+    world_.addCircle(def);
+    circleItem_.push_back(-1);
+    projectile_.push_back(1);
+    state.fired = true;
+    events_.push_back({EventKind::shot, frame(), world_.time(), item.name, item.position, 0});
+}
+
+void LevelRun::detonate(int bomb) {
+    ItemState& state = states_[static_cast<std::size_t>(bomb)];
+    if (state.detonatedAt) return; // a bomb goes off once
+    const ItemDesc& item = items_[static_cast<std::size_t>(bomb)];
+    state.detonatedAt = world_.time();
+    Explosion explosion;
+    explosion.centre = item.position;
+    explosion.radius = item.blastRadius;
+    explosion.strength = item.strength;
+    const std::vector<int> pushed = applyExplosion(world_, explosion);
+    // The casing is gone: shrunk to a speck, since a World cannot remove a body.
+    if (state.firstCircle >= 0) world_.circles()[static_cast<std::size_t>(state.firstCircle)].radius = 1e-4;
+    events_.push_back({EventKind::explosion, frame(), world_.time(), item.name, item.position, static_cast<int>(pushed.size())});
+}
+
+void LevelRun::toggle(int switchItem) {
+    const int target = find(items_[static_cast<std::size_t>(switchItem)].triggers);
+    if (target < 0) return;
+    if (items_[static_cast<std::size_t>(target)].kind == ItemKind::cannon) fire(target);
+    else if (items_[static_cast<std::size_t>(target)].kind == ItemKind::bomb) detonate(target);
+}
+
+void LevelRun::markHit(int item, Vec2 point) {
+    ItemState& state = states_[static_cast<std::size_t>(item)];
+    const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
+    switch (desc.kind) {
+    case ItemKind::target:
+    case ItemKind::switchItem:
+        // Only the first touch is news: a ball resting on a target would report it every step.
+        if (state.hit) return;
+        state.hit = true;
+        events_.push_back({EventKind::hit, frame(), world_.time(), desc.name, point, 0});
+        if (desc.kind == ItemKind::switchItem) toggle(item);
+        break;
+    case ItemKind::bomb:
+        if (desc.trigger == Trigger::impact) detonate(item);
+        break;
+    default: break;
+    }
+}
+
+void LevelRun::step() {
+    const double dt = world_.def().timeStep;
+    for (std::size_t i = 0; i < world_.circles().size(); ++i)
+        if (isBalloon(static_cast<int>(i))) world_.circles()[i].velocity -= world_.def().gravity * (kBalloonLift * dt);
+    world_.step();
+    for (const Impact& impact : world_.lastImpacts()) {
+        if (impact.otherKind != Other::circle) continue;
+        const int item = circleItem_[static_cast<std::size_t>(impact.other)];
+        if (item >= 0) markHit(item, impact.pointOfImpact);
+    }
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+        const ItemDesc& item = items_[i];
+        if (item.kind == ItemKind::bomb && item.trigger == Trigger::timer && world_.time() >= item.fuse - 1e-9)
+            detonate(static_cast<int>(i));
+        if (item.kind == ItemKind::cannon && item.fireAt && !states_[i].fired && world_.time() >= *item.fireAt - 1e-9)
+            fire(static_cast<int>(i));
+    }
+    checkGoal();
+}
+
+bool LevelRun::ballRestsIn(const ItemDesc& bucket) const {
+    const double half = 0.5 * bucket.size;
+    for (const Circle& c : world_.circles()) {
+        if (c.motion != Motion::dynamic || c.velocity.length() > kRestSpeed) continue;
+        const Vec2 p = c.position - bucket.position;
+        if (std::abs(p.x) < half && p.y > 0.0 && p.y < bucket.height) return true;
+    }
+    return false;
+}
+
+void LevelRun::checkGoal() {
+    const auto& goal = scene_.level.goal;
+    if (!goal || goalFrame_) return;
+    if (goal->timeLimit && world_.time() > *goal->timeLimit + 1e-9) return;
+    bool reached = false;
+    switch (goal->kind) {
+    case GoalKind::targetHit: {
+        const int target = find(goal->item);
+        reached = target >= 0 && states_[static_cast<std::size_t>(target)].hit;
+        break;
+    }
+    case GoalKind::allTargets:
+        reached = true;
+        for (std::size_t i = 0; i < items_.size(); ++i)
+            if (items_[i].kind == ItemKind::target && !states_[i].hit) reached = false;
+        break;
+    case GoalKind::ballInBucket: {
+        const int bucket = find(goal->item);
+        bucketRestSteps_ = bucket >= 0 && ballRestsIn(items_[static_cast<std::size_t>(bucket)]) ? bucketRestSteps_ + 1 : 0;
+        reached = static_cast<double>(bucketRestSteps_) * world_.def().timeStep >= kRestSeconds;
+        break;
+    }
+    }
+    if (!reached) return;
+    goalFrame_ = frame();
+    events_.push_back({EventKind::goal, frame(), world_.time(), goal->item, {}, 0});
+}
+
+} // namespace rube::game

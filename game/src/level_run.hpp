@@ -1,0 +1,107 @@
+#pragma once
+/// LevelRun: a level being played. Builds the World from the level and the player's placements,
+/// steps it, and turns what happens in it (impacts, timers, switches) into the game's events:
+/// targets hit, cannons fired, bombs going off, and the goal reached.
+
+#include "placement.hpp"
+
+#include "rube/physics/aim.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// What kind of thing happened.
+enum class EventKind : std::uint8_t { hit, shot, explosion, goal };
+
+/// One thing that happened, for the summary and the expectations.
+struct GameEvent {
+    EventKind kind = EventKind::hit;
+    std::int64_t frame = 0; ///< steps taken when it happened (the step it happened in)
+    double time = 0.0;      ///< world time, s
+    std::string item;       ///< the target, switch, cannon or bomb's name
+    Vec2 position;          ///< hits: the point of impact; shots: the muzzle; explosions: the centre
+    int count = 0;          ///< explosions: bodies pushed
+};
+
+/// Where one item's bodies are in the World, and what has happened to it.
+struct ItemState {
+    int firstCircle = -1;       ///< its circle in the World, or -1
+    int firstSegment = -1;      ///< its first segment in the World, or -1
+    double aim = 0.0;           ///< cannons: the barrel's angle now, radians
+    bool hit = false;           ///< targets and switches: touched by a ball
+    bool fired = false;         ///< cannons: have shot
+    std::optional<double> detonatedAt; ///< bombs: when they went off, s
+};
+
+/// A level in play. Placements must have passed checkPlacements().
+class LevelRun {
+public:
+    /// The world of `scene` with `placements` added as items after the fixed ones.
+    LevelRun(const SceneDesc& scene, const std::vector<Placement>& placements);
+
+    /// Advances one step: balloon lift, the physics, then timers, hits, switches and the goal.
+    void step();
+
+    /// The world as it is now.
+    const World& world() const { return world_; }
+    /// Every item, fixed ones first, then the placements.
+    const std::vector<ItemDesc>& items() const { return items_; }
+    /// The state of each item, in the order of items().
+    const std::vector<ItemState>& states() const { return states_; }
+    /// Everything that happened so far, in order.
+    const std::vector<GameEvent>& events() const { return events_; }
+    /// Steps taken so far (the frame number with --every 1).
+    std::int64_t frame() const { return world_.stats().steps; }
+    /// The step in which the goal was reached, if it has been.
+    std::optional<std::int64_t> goalFrame() const { return goalFrame_; }
+    /// The level's goal, if it has one.
+    const std::optional<Goal>& goal() const { return scene_.level.goal; }
+    /// The index of the item called `name`, or -1.
+    int find(std::string_view name) const;
+    /// True when World circle `circle` was shot from a cannon.
+    bool isProjectile(int circle) const;
+    /// True when World circle `circle` is a balloon.
+    bool isBalloon(int circle) const;
+
+    /// Where an item is now (targets on a path move) and how fast it moves, m/s.
+    Vec2 itemPosition(int item) const;
+    /// The item's velocity now: a target on a path moves at its path's speed.
+    Vec2 itemVelocity(int item) const;
+    /// The launch velocity cannon `cannon` would give a shot now.
+    Vec2 launchVelocity(int cannon) const;
+
+    /// Turns a cannon's barrel to `angle` radians.
+    void aim(int cannon, double angle);
+    /// Aims a cannon at a fixed point on the low or high gravity arc; "" or why it cannot.
+    std::string aimAtPoint(int cannon, Vec2 point, bool highArc);
+    /// Aims a cannon at an item: a still one on the chosen arc, a moving one by leading it; "" or why not.
+    std::string aimAtItem(int cannon, int item, bool highArc);
+    /// Fires a cannon: a ball of its ammo kind leaves its pivot at its aim and muzzle speed.
+    void fire(int cannon);
+    /// Sets a bomb off now.
+    void detonate(int bomb);
+    /// Flips a switch as if a ball had hit it: the item it names goes off.
+    void toggle(int switchItem);
+
+private:
+    void addItem(const ItemDesc& item);
+    void markHit(int item, Vec2 point);
+    void checkGoal();
+    bool ballRestsIn(const ItemDesc& bucket) const;
+
+    SceneDesc scene_;
+    World world_;
+    std::vector<ItemDesc> items_;
+    std::vector<ItemState> states_;
+    std::vector<int> circleItem_;       // World circle -> the item it belongs to, or -1
+    std::vector<char> projectile_;      // World circle -> shot from a cannon
+    std::vector<GameEvent> events_;
+    std::optional<std::int64_t> goalFrame_;
+    std::int64_t bucketRestSteps_ = 0;  // consecutive steps a ball has rested in the goal's bucket
+};
+
+} // namespace rube::game

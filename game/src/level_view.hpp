@@ -1,0 +1,38 @@
+#pragma once
+/// LevelView: a level in play as a DrawList. Each item kind has its own greybox look, cannons
+/// show their aim and the arc a shot would take, projectiles point along their velocity,
+/// explosions expand as rings, and the HUD says how the goal stands.
+
+#include "level_run.hpp"
+
+#include "rube/render/camera.hpp"
+#include "rube/render/draw_list.hpp"
+
+#include <string>
+
+namespace rube::game {
+
+/// Draws one level run, frame after frame, through a camera fixed for the whole run.
+class LevelView {
+public:
+    /// A view named `levelName` in the HUD, through `camera` into frames of `frame` pixels.
+    LevelView(std::string levelName, render::Camera camera, render::FrameSize frame);
+
+    /// Clears `list` and fills it with the run as it is now, for frame number `frame`.
+    void draw(const LevelRun& run, std::int64_t frame, render::DrawList& list) const;
+    /// The HUD's goal line: the goal's text and whether it is reached.
+    std::string goalLine(const LevelRun& run) const;
+    /// The camera every frame is drawn through.
+    const render::Camera& camera() const { return camera_; }
+
+private:
+    void drawBodies(const LevelRun& run, render::DrawList& list) const;
+    void drawItems(const LevelRun& run, render::DrawList& list) const;
+    void drawHud(const LevelRun& run, std::int64_t frame, render::DrawList& list) const;
+
+    std::string levelName_;
+    render::Camera camera_;
+    render::FrameSize frame_;
+};
+
+} // namespace rube::game

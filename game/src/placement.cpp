@@ -1,0 +1,114 @@
+// Placement: the three rules a placed item must pass, checked with exact shapes (capsules), not
+// boxes, so a ball may sit right beside a sloped ramp whose bounding box it overlaps.
+#include "placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rube::game {
+
+namespace {
+
+// Everything here is a capsule: a segment a-b thickened by radius (a circle has a == b).
+struct Capsule {
+    Vec2 a, b;
+    double radius = 0.0;
+    std::string what; // how a message names it: "the fixed segment 2", "placement 1 (plank)"
+};
+
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
+    const Vec2 ab = b - a;
+    const double l2 = ab.lengthSquared();
+    const double t = l2 > 0.0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    return p.distance(a + ab * t);
+}
+
+// Two segments are 0 apart when they cross; otherwise the closest pair includes an endpoint.
+double segmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+    const double d1 = (b - a).cross(c - a), d2 = (b - a).cross(d - a);
+    const double d3 = (d - c).cross(a - c), d4 = (d - c).cross(b - c);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0.0;
+    return std::min({pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d), pointSegmentDistance(c, a, b),
+                     pointSegmentDistance(d, a, b)});
+}
+
+bool overlaps(const Capsule& p, const Capsule& q) {
+    return segmentDistance(p.a, p.b, q.a, q.b) < p.radius + q.radius;
+}
+
+void addBodies(const ItemBodies& bodies, const std::string& what, std::vector<Capsule>& out) {
+    for (const CircleDef& c : bodies.circles) out.push_back({c.position, c.position, c.radius, what});
+    for (const SegmentDef& s : bodies.segments) out.push_back({s.a, s.b, s.radius, what});
+}
+
+std::string itemWords(const ItemDesc& item) {
+    std::string words = "the fixed " + std::string(itemKindName(item.kind));
+    if (!item.name.empty()) words += " '" + item.name + "'";
+    return words;
+}
+
+// Every fixed part: the scene's circles and segments, and each fixed item's bodies (a cannon,
+// having none, still takes the room of its barrel).
+std::vector<Capsule> fixedParts(const SceneDesc& scene) {
+    std::vector<Capsule> parts;
+    for (std::size_t i = 0; i < scene.circles.size(); ++i)
+        parts.push_back({scene.circles[i].position, scene.circles[i].position, scene.circles[i].radius,
+                         "the fixed circle " + std::to_string(i)});
+    for (std::size_t i = 0; i < scene.segments.size(); ++i)
+        parts.push_back({scene.segments[i].a, scene.segments[i].b, scene.segments[i].radius,
+                         "the fixed segment " + std::to_string(i) + " (" + formatPair(scene.segments[i].a.x, scene.segments[i].a.y) +
+                             " to " + formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")"});
+    for (const ItemDesc& item : scene.level.items) {
+        if (item.kind == ItemKind::cannon) parts.push_back({item.position, item.position, 0.6, itemWords(item)});
+        else addBodies(itemBodies(item), itemWords(item), parts);
+    }
+    return parts;
+}
+
+bool inside(const Aabb& outer, const Aabb& inner) {
+    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
+}
+
+} // namespace
+
+ItemDesc placedItem(const Placement& placement) {
+    ItemDesc item = defaultItem(placement.kind, placement.position);
+    item.angle = placement.angle;
+    item.name = placement.name;
+    item.place = placement.place;
+    return item;
+}
+
+std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const std::vector<Placement>& placements) {
+    std::vector<Capsule> taken = fixedParts(scene);
+    std::map<std::string, int, std::less<>> used;
+    for (std::size_t i = 0; i < placements.size(); ++i) {
+        const Placement& p = placements[i];
+        const ItemDesc item = placedItem(p);
+        const std::string kind(itemKindName(p.kind));
+        const std::string head = "placement refused: " + kind + " at " + formatPair(p.position.x, p.position.y) + " ";
+        const auto refuse = [&](std::string why) { return PlacementRefusal{i, head + why}; };
+        const auto stock = scene.level.inventory.find(kind);
+        const int have = stock == scene.level.inventory.end() ? 0 : stock->second;
+        if (++used[kind] > have)
+            return refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kind +
+                          (have == 1 ? "" : "s") + " and this is number " + std::to_string(used[kind]));
+        const Aabb extent = itemExtent(item);
+        const bool inZone = std::any_of(scene.level.zones.begin(), scene.level.zones.end(),
+                                        [&](const Zone& z) { return inside(z.box, extent); });
+        if (!inZone)
+            return refuse(scene.level.zones.empty() ? std::string("is outside every placement zone (the level has none)")
+                                                    : "is not wholly inside a placement zone (it spans " +
+                                                          formatPair(extent.min.x, extent.min.y) + " to " +
+                                                          formatPair(extent.max.x, extent.max.y) + ")");
+        std::vector<Capsule> mine;
+        addBodies(itemBodies(item), "placement " + std::to_string(i + 1) + " (" + kind + ")", mine);
+        for (const Capsule& shape : mine)
+            for (const Capsule& other : taken)
+                if (overlaps(shape, other)) return refuse("overlaps " + other.what);
+        taken.insert(taken.end(), mine.begin(), mine.end());
+    }
+    return std::nullopt;
+}
+
+} // namespace rube::game

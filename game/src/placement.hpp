@@ -1,0 +1,34 @@
+#pragma once
+/// Placement: the player's items put into a level before it runs, and the rules that refuse them.
+
+#include "scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// One item the player places from the inventory.
+struct Placement {
+    ItemKind kind = ItemKind::plank; ///< must be in the level's inventory
+    Vec2 position;                   ///< centre
+    double angle = 0.0;              ///< radians; planks and ramps only
+    std::string name;                ///< optional, so scripts can refer to it later
+    SourcePlace place;               ///< where the script wrote it
+};
+
+/// A placement that was refused: which rule, and the words of the message.
+struct PlacementRefusal {
+    std::size_t index = 0; ///< which placement, in order
+    std::string message;   ///< "placement refused: plank at [1, 2] overlaps the fixed segment 3 (...)"
+};
+
+/// Checks every placement in order against the level's rules: the kind is in the inventory and
+/// its count is not used up, the item lies wholly inside a placement zone, and it overlaps no
+/// fixed part and no earlier placement. Returns the first refusal, or nothing when all are fine.
+std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const std::vector<Placement>& placements);
+
+/// The item a placement puts into the level: the kind's defaults at the placement's pose.
+ItemDesc placedItem(const Placement& placement);
+
+} // namespace rube::game

@@ -1,0 +1,192 @@
+// `rube run` for levels: load the script, take its actions frame by frame, record frames, then
+// judge the goal and the expectations and write the summary (JSON) of what happened.
+#include "play_command.hpp"
+
+#include "frame_recorder.hpp"
+#include "level_view.hpp"
+#include "scene_framing.hpp"
+#include "script_file.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+namespace rube::game {
+
+namespace {
+
+// After the goal the run goes on this long, so the frames show what reaching it looked like.
+constexpr double kAfterGoalSeconds = 0.5;
+
+const char* eventName(EventKind kind) {
+    switch (kind) {
+    case EventKind::hit: return "hit";
+    case EventKind::shot: return "shot";
+    case EventKind::explosion: return "explosion";
+    case EventKind::goal: return "goal";
+    }
+    return "";
+}
+
+std::string jsonString(const std::string& text) {
+    std::string quoted = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') quoted += '\\';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+std::string jsonNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+// The summary: every event with its frame, time and position, and how each expectation fared.
+std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::vector<std::pair<std::string, bool>>& expectations) {
+    std::ostringstream json;
+    json << "{\n  \"level\": " << jsonString(level.name) << ",\n  \"steps\": " << run.frame()
+         << ",\n  \"goal_reached\": " << (run.goalFrame() ? "true" : "false")
+         << ",\n  \"goal_frame\": " << (run.goalFrame() ? std::to_string(*run.goalFrame()) : "null") << ",\n  \"events\": [";
+    bool first = true;
+    for (const GameEvent& e : run.events()) {
+        json << (first ? "\n" : ",\n") << "    {\"kind\": \"" << eventName(e.kind) << "\", \"frame\": " << e.frame
+             << ", \"time\": " << jsonNumber(e.time) << ", \"item\": " << jsonString(e.item) << ", \"position\": ["
+             << jsonNumber(e.position.x) << ", " << jsonNumber(e.position.y) << "]";
+        if (e.kind == EventKind::explosion) json << ", \"bodies\": " << e.count;
+        json << "}";
+        first = false;
+    }
+    json << (first ? "" : "\n  ") << "],\n  \"expectations\": [";
+    first = true;
+    for (const auto& [text, met] : expectations) {
+        json << (first ? "\n" : ",\n") << "    {\"expect\": " << jsonString(text) << ", \"met\": " << (met ? "true" : "false") << "}";
+        first = false;
+    }
+    json << (first ? "" : "\n  ") << "]\n}\n";
+    return json.str();
+}
+
+// Written under a temporary name and renamed, so a reader never sees half a summary.
+bool writeSummary(const std::filesystem::path& file, const std::string& text) {
+    const std::filesystem::path temporary = file.string() + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        if (!(out << text) || !out.flush()) return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, file, ec);
+    return !ec;
+}
+
+bool met(const Expectation& e, const LevelRun& run) {
+    for (const GameEvent& event : run.events())
+        if (event.kind == e.kind && (e.kind == EventKind::goal || event.item == e.item) && event.frame < e.beforeFrame) return true;
+    return false;
+}
+
+} // namespace
+
+std::string takeAction(const Action& a, LevelRun& run) {
+    const int item = run.find(a.item);
+    switch (a.kind) {
+    case ActionKind::rotate: run.aim(item, *a.angle); return "";
+    case ActionKind::aim:
+        if (a.angle) run.aim(item, *a.angle);
+        else if (a.point) return run.aimAtPoint(item, *a.point, a.highArc);
+        else return run.aimAtItem(item, run.find(a.target), a.highArc);
+        return "";
+    case ActionKind::fire: run.fire(item); return "";
+    case ActionKind::detonate: run.detonate(item); return "";
+    case ActionKind::toggle: run.toggle(item); return "";
+    }
+    return "";
+}
+
+int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& out, std::ostream& err) {
+    ScriptDesc script;
+    if (!options.script.empty()) {
+        ScriptLoad load = loadScriptFile(options.script, level);
+        if (!load.script) {
+            err << load.errors.front().format() << '\n';
+            return 2;
+        }
+        script = std::move(*load.script);
+    }
+    LevelRun run(level, script.placements);
+    const double dt = level.world.timeStep;
+    std::int64_t steps = level.defaultSteps();
+    if (level.level.goal && level.level.goal->timeLimit) steps = static_cast<std::int64_t>(std::ceil(*level.level.goal->timeLimit / dt - 1e-9));
+    if (script.steps) steps = *script.steps;
+    if (options.steps) steps = *options.steps;
+    const std::int64_t every = options.everyGiven ? options.every : script.every.value_or(options.every);
+    const render::FrameSize size = options.sizeGiven ? options.size : script.size.value_or(options.size);
+
+    std::unique_ptr<FrameRecorder> recorder;
+    std::unique_ptr<LevelView> view;
+    render::DrawList list;
+    std::int64_t framesWritten = 0;
+    if (!options.out.empty()) {
+        try {
+            recorder = std::make_unique<FrameRecorder>(options.out, size);
+        } catch (const OutputFolderError& e) {
+            err << "rube run: " << e.what() << '\n';
+            return 2;
+        } catch (const std::exception& e) {
+            err << "rube run: cannot render: " << e.what() << '\n';
+            return 1;
+        }
+        view = std::make_unique<LevelView>(level.name, sceneCamera(frameScene(level, run.world()), size), size);
+    }
+    const auto record = [&] {
+        if (!recorder || (options.frames && framesWritten >= *options.frames)) return;
+        view->draw(run, run.frame(), list);
+        recorder->record(list, view->camera(), framesWritten++);
+    };
+
+    std::vector<std::string> failures;
+    std::size_t next = 0;
+    const std::int64_t tail = static_cast<std::int64_t>(std::ceil(kAfterGoalSeconds / dt));
+    try {
+        for (std::int64_t i = 0;; ++i) {
+            for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
+                if (const std::string why = takeAction(script.actions[next], run); !why.empty())
+                    failures.push_back(options.script + ":" + std::to_string(script.actions[next].place.line) + ":" +
+                                       std::to_string(script.actions[next].place.column) + ": at frame " + std::to_string(i) + ": " + why);
+            if (i % every == 0) record();
+            if (i >= steps || (run.goalFrame() && i >= *run.goalFrame() + tail)) break;
+            run.step();
+        }
+        if (recorder) recorder->finish();
+    } catch (const std::exception& e) {
+        err << "rube run: " << e.what() << '\n';
+        return 1;
+    }
+
+    std::vector<std::pair<std::string, bool>> judged;
+    for (const Expectation& e : script.expectations) {
+        judged.emplace_back(e.describe(), met(e, run));
+        if (!judged.back().second)
+            failures.push_back(options.script + ":" + std::to_string(e.place.line) + ":" + std::to_string(e.place.column) +
+                               ": expectation failed: " + e.describe());
+    }
+    if (!options.out.empty() && !writeSummary(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged))) {
+        err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << '\n';
+        return 1;
+    }
+    out << "level:            " << level.name << '\n';
+    out << "steps:            " << run.frame() << '\n';
+    for (const GameEvent& e : run.events())
+        out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item) << '\n';
+    out << "goal:             " << (run.goalFrame() ? "reached at frame " + std::to_string(*run.goalFrame()) : std::string("not reached")) << '\n';
+    if (recorder) out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
+    for (const std::string& failure : failures) err << failure << '\n';
+    if (!run.goalFrame() && level.level.goal) err << "rube run: goal not reached: " << level.level.goal->text << '\n';
+    return failures.empty() && (run.goalFrame() || !level.level.goal) ? 0 : 1;
+}
+
+} // namespace rube::game

@@ -1,0 +1,218 @@
+// Script files: read with the scene's TableReader, so their errors read like a level's, and
+// checked against the level they play (names, kinds, and the placement rules).
+#include "script_file.hpp"
+
+#include "toml_reader.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+namespace rube::game {
+
+namespace {
+
+constexpr std::string_view kTopKeys[] = {"level", "steps", "capture", "place", "action", "expect"};
+constexpr std::string_view kCaptureKeys[] = {"size", "every"};
+constexpr std::string_view kPlaceKeys[] = {"kind", "position", "angle", "name"};
+constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle"};
+constexpr std::string_view kRotateKeys[] = {"frame", "do", "item", "angle"};
+constexpr std::string_view kAimKeys[] = {"frame", "do", "item", "angle", "point", "target", "arc"};
+constexpr std::string_view kItemKeys[] = {"frame", "do", "item"};
+constexpr std::string_view kExpectKeys[] = {"goal", "hit", "shot", "explosion", "before_frame"};
+constexpr std::string_view kArcNames[] = {"low", "high"};
+// The longest run a script may ask for: an hour at 60 steps a second.
+constexpr std::int64_t kMaxSteps = 216'000;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// The item an action or expectation names must exist and be of the kind it acts on.
+bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level,
+               std::initializer_list<ItemKind> kinds) {
+    const int index = level.level.find(name);
+    std::vector<std::string_view> candidates;
+    for (const ItemDesc& item : level.level.items)
+        for (ItemKind kind : kinds)
+            if (item.kind == kind && !item.name.empty()) candidates.push_back(item.name);
+    std::string kindWords;
+    for (ItemKind kind : kinds) kindWords += (kindWords.empty() ? "" : " or ") + std::string(itemKindName(kind));
+    if (index >= 0 && std::find(kinds.begin(), kinds.end(), level.level.items[static_cast<std::size_t>(index)].kind) != kinds.end())
+        return true;
+    std::string message = index >= 0 ? "'" + name + "' is a " + std::string(itemKindName(level.level.items[static_cast<std::size_t>(index)].kind)) +
+                                           ", not a " + kindWords
+                                     : "unknown " + kindWords + " '" + name + "' in level '" + level.name + "'";
+    if (const auto match = closestMatch(name, candidates); match && index < 0) message += " (did you mean '" + std::string(*match) + "'?)";
+    else if (candidates.empty()) message += " (the level has no " + kindWords + ")";
+    else message += " (the level has: " + joinNames(candidates) + ")";
+    table.error(table.valuePlace(key), std::move(message));
+    return false;
+}
+
+void readCapture(TableReader& root, ScriptDesc& script) {
+    const toml::table* table = root.table("capture", "[capture] with size and every");
+    if (!table) return;
+    TableReader capture(*table, "in [capture]", kCaptureKeys, root.diagnostics());
+    if (const toml::node* node = capture.find("size")) {
+        const auto* array = node->as_array();
+        const bool ok = array && array->size() == 2 && array->get(0)->is_integer() && array->get(1)->is_integer();
+        const auto w = ok ? array->get(0)->as_integer()->get() : 0;
+        const auto h = ok ? array->get(1)->as_integer()->get() : 0;
+        if (!ok || w < 1 || h < 1 || w > 8192 || h > 8192)
+            capture.error(placeOf(node->source()), "size must be [width, height] in whole pixels, each 1 to 8192");
+        else script.size = render::FrameSize{static_cast<int>(w), static_cast<int>(h)};
+    }
+    script.every = capture.integer("every", 1, 10'000);
+}
+
+void readPlacements(TableReader& root, ScriptDesc& script) {
+    std::vector<std::string_view> placeable;
+    for (ItemKind kind : kAllItemKinds)
+        if (isPlaceable(kind)) placeable.push_back(itemKindName(kind));
+    for (const toml::table* table : root.arrayOfTables("place")) {
+        TableReader place(*table, "in [[place]]", kPlaceKeys, root.diagnostics());
+        Placement p;
+        const auto kind = place.choice("kind", placeable, Need::required);
+        const auto position = place.vec2("position", Need::required);
+        if (const auto a = place.number("angle", NumberRange{-360.0, 360.0})) p.angle = radians(*a);
+        p.name = place.string("name").value_or("");
+        p.place = place.tablePlace();
+        if (!kind || !position) continue;
+        p.kind = std::find_if(std::begin(kAllItemKinds), std::end(kAllItemKinds),
+                              [&](ItemKind k) { return itemKindName(k) == placeable[*kind]; })[0];
+        p.position = *position;
+        script.placements.push_back(p);
+    }
+}
+
+void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& level, ScriptDesc& script) {
+    // The verb decides the keys; read it first, as a level's [[item]] reads its kind.
+    const toml::node* verb = table.get("do");
+    std::size_t index = std::size(kDoNames);
+    if (verb && verb->is_string())
+        for (std::size_t i = 0; i < std::size(kDoNames); ++i)
+            if (kDoNames[i] == verb->as_string()->get()) index = i;
+    const ActionKind kind = index < std::size(kDoNames) ? static_cast<ActionKind>(index) : ActionKind::fire;
+    const std::span<const std::string_view> keys = kind == ActionKind::rotate ? std::span<const std::string_view>(kRotateKeys)
+                                                   : kind == ActionKind::aim  ? std::span<const std::string_view>(kAimKeys)
+                                                                              : std::span<const std::string_view>(kItemKeys);
+    TableReader action(table, "in [[action]]", index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag);
+    if (!action.choice("do", kDoNames, Need::required)) return;
+    Action a;
+    a.kind = kind;
+    a.place = action.tablePlace();
+    a.frame = action.integer("frame", 0, kMaxSteps, Need::required).value_or(0);
+    a.item = action.string("item", Need::required).value_or("");
+    if (a.item.empty()) return;
+    switch (kind) {
+    case ActionKind::rotate:
+        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0}, Need::required)) a.angle = radians(*angle);
+        break;
+    case ActionKind::aim: {
+        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0})) a.angle = radians(*angle);
+        a.point = action.vec2("point");
+        a.target = action.string("target").value_or("");
+        if (const auto arc = action.choice("arc", kArcNames)) a.highArc = *arc == 1;
+        const int ways = (action.find("angle") ? 1 : 0) + (action.find("point") ? 1 : 0) + (action.find("target") ? 1 : 0);
+        if (ways != 1) action.error(action.tablePlace(), "an aim needs exactly one of angle, point or target, got " + std::to_string(ways));
+        if (!a.target.empty()) checkItem(action, "target", a.target, level, {ItemKind::target, ItemKind::bomb, ItemKind::switchItem, ItemKind::bucket});
+        break;
+    }
+    case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
+    case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
+    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem}); break;
+    }
+    script.actions.push_back(a);
+}
+
+void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& script) {
+    for (const toml::table* table : root.arrayOfTables("expect")) {
+        TableReader expect(*table, "in [[expect]]", kExpectKeys, root.diagnostics());
+        Expectation e;
+        e.place = expect.tablePlace();
+        const auto before = expect.integer("before_frame", 1, kMaxSteps, Need::required);
+        const int ways = (expect.find("goal") ? 1 : 0) + (expect.find("hit") ? 1 : 0) + (expect.find("shot") ? 1 : 0) +
+                         (expect.find("explosion") ? 1 : 0);
+        if (ways != 1) {
+            expect.error(e.place, "an expectation needs exactly one of goal = true, hit, shot or explosion, got " + std::to_string(ways));
+            continue;
+        }
+        if (const auto goal = expect.boolean("goal")) {
+            if (!*goal) expect.error(expect.valuePlace("goal"), "goal = false expects nothing; write goal = true");
+            if (!level.level.goal) expect.error(expect.valuePlace("goal"), "level '" + level.name + "' has no [goal]");
+            e.kind = EventKind::goal;
+        } else if (const auto hit = expect.string("hit")) {
+            e.kind = EventKind::hit;
+            e.item = *hit;
+            checkItem(expect, "hit", *hit, level, {ItemKind::target, ItemKind::switchItem});
+        } else if (const auto shot = expect.string("shot")) {
+            e.kind = EventKind::shot;
+            e.item = *shot;
+            checkItem(expect, "shot", *shot, level, {ItemKind::cannon});
+        } else if (const auto boom = expect.string("explosion")) {
+            e.kind = EventKind::explosion;
+            e.item = *boom;
+            checkItem(expect, "explosion", *boom, level, {ItemKind::bomb});
+        }
+        if (before) e.beforeFrame = *before;
+        script.expectations.push_back(e);
+    }
+}
+
+} // namespace
+
+std::string Expectation::describe() const {
+    const std::string when = " before frame " + std::to_string(beforeFrame);
+    switch (kind) {
+    case EventKind::goal: return "goal reached" + when;
+    case EventKind::hit: return "'" + item + "' hit" + when;
+    case EventKind::shot: return "cannon '" + item + "' fired" + when;
+    case EventKind::explosion: return "bomb '" + item + "' exploded" + when;
+    }
+    return "";
+}
+
+ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level) {
+    Diagnostics diag(fileName);
+    toml::table document;
+    try {
+        document = toml::parse(text, std::string_view(fileName));
+    } catch (const toml::parse_error& e) {
+        diag.error(placeOf(e.source()), "syntax error: " + std::string(e.description()));
+        return {std::nullopt, diag.sorted()};
+    }
+    ScriptDesc script;
+    TableReader root(document, "at the top level of a script", kTopKeys, diag);
+    if (const auto name = root.string("level", Need::required)) {
+        script.level = *name;
+        if (*name != level.name)
+            root.error(root.valuePlace("level"), "this script plays level '" + *name + "', but the level given is '" + level.name + "'");
+    }
+    script.steps = root.integer("steps", 1, kMaxSteps);
+    readCapture(root, script);
+    readPlacements(root, script);
+    for (const toml::table* table : root.arrayOfTables("action")) readAction(*table, diag, level, script);
+    readExpectations(root, level, script);
+    if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    // The rules of placement are checked last: they only make sense for a script that reads.
+    if (const auto refusal = checkPlacements(level, script.placements)) {
+        diag.error(script.placements[refusal->index].place, refusal->message);
+        return {std::nullopt, diag.sorted()};
+    }
+    std::stable_sort(script.actions.begin(), script.actions.end(), [](const Action& a, const Action& b) { return a.frame < b.frame; });
+    return {std::move(script), {}};
+}
+
+ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& level) {
+    const std::string fileName = file.string();
+    std::error_code ec;
+    std::ifstream in(file, std::ios::binary);
+    if (!in || std::filesystem::is_directory(file, ec)) return {std::nullopt, {{fileName, {}, "cannot open file"}}};
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str(), fileName, level);
+}
+
+} // namespace rube::game

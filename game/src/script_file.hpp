@@ -1,0 +1,69 @@
+#pragma once
+/// Script files (levels/NAME.solution.toml): a scripted playthrough of one level — the player's
+/// placements, frame-indexed actions, expectations about what must happen, and capture settings.
+
+#include "level_run.hpp"
+
+#include "rube/render/camera.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// What an action does.
+enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle };
+
+/// One action, taken when the run has taken `frame` steps (before the next one).
+struct Action {
+    std::int64_t frame = 0;        ///< steps taken before it happens
+    ActionKind kind = ActionKind::fire;
+    std::string item;              ///< the cannon, bomb or switch it acts on
+    std::optional<double> angle;   ///< rotate, aim: radians
+    std::optional<Vec2> point;     ///< aim: a point to hit
+    std::string target;            ///< aim: an item to hit (led when it moves)
+    bool highArc = false;          ///< aim at a point or item: the lobbed arc
+    SourcePlace place;             ///< where the script wrote it
+};
+
+/// An assertion about the run: an event must happen before a frame.
+struct Expectation {
+    EventKind kind = EventKind::goal; ///< hit, shot, explosion or goal
+    std::string item;                 ///< the target, cannon or bomb (empty for the goal)
+    std::int64_t beforeFrame = 0;     ///< it must happen in a step before this frame number
+    SourcePlace place;                ///< where the script wrote it
+    /// "target 'T' hit before frame 600".
+    std::string describe() const;
+};
+
+/// A whole script, validated against its level.
+struct ScriptDesc {
+    std::string level;                     ///< the level's name it plays
+    std::optional<std::int64_t> steps;     ///< how long to run, else the level's time limit or duration
+    std::optional<render::FrameSize> size; ///< [capture] size of the frames
+    std::optional<std::int64_t> every;     ///< [capture] steps between frames
+    std::vector<Placement> placements;     ///< [[place]] in file order
+    std::vector<Action> actions;           ///< [[action]] sorted by frame, file order within a frame
+    std::vector<Expectation> expectations; ///< [[expect]] in file order
+};
+
+/// Takes one action on a run (the names were checked when the script was read); "" or why it
+/// could not be done, such as an aim at a point out of the cannon's reach.
+std::string takeAction(const Action& action, LevelRun& run);
+
+/// The outcome of loading a script: a script when there are no errors, else the errors by place.
+struct ScriptLoad {
+    std::optional<ScriptDesc> script; ///< present exactly when there are no errors
+    std::vector<SceneError> errors;   ///< every error found, top of the file first
+};
+
+/// Reads a script for `level`, checking every name it uses against the level and its placements;
+/// the placements' rules (inventory, zones, overlaps) are checked here too.
+ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& level);
+
+/// The same from text; `fileName` is what errors are reported under.
+ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level);
+
+} // namespace rube::game

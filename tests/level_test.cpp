@@ -1,0 +1,165 @@
+// Level tests: every level in levels/ is solved by its script and not solved as it stands, the
+// placement rules refuse what they should, and aiming through the game layer hits analytically.
+#include "level_run.hpp"
+#include "scene_file.hpp"
+#include "script_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace rube;
+using namespace rube::game;
+
+namespace {
+
+const char* const kLevels[] = {"ramp", "cannon-arc", "moving-target", "chain-reaction", "newton"};
+
+SceneDesc loadLevel(const std::string& name) {
+    const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
+    INFO((load.errors.empty() ? std::string() : load.errors.front().format()));
+    REQUIRE(load.ok());
+    return *load.scene;
+}
+
+// Plays a level with its script (headless) and returns the run; actions as `rube run` takes them.
+LevelRun play(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps) {
+    LevelRun run(level, script.placements);
+    std::size_t next = 0;
+    for (std::int64_t i = 0; i < steps; ++i) {
+        for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
+            REQUIRE(takeAction(script.actions[next], run).empty());
+        run.step();
+    }
+    return run;
+}
+
+SceneDesc parseLevel(const std::string& text) {
+    const SceneLoad load = parseScene(text, "test.toml");
+    INFO((load.errors.empty() ? std::string() : load.errors.front().format()));
+    REQUIRE(load.ok());
+    return *load.scene;
+}
+
+std::string firstError(const std::string& text) {
+    const SceneLoad load = parseScene(text, "t.toml");
+    return load.errors.empty() ? std::string("no error") : load.errors.front().format();
+}
+
+} // namespace
+
+TEST_CASE("each level's solution reaches the goal, and the level as it stands does not", "[level]") {
+    for (const char* name : kLevels) {
+        INFO(name);
+        const SceneDesc level = loadLevel(name);
+        const ScriptLoad script = loadScriptFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (std::string(name) + ".solution.toml"), level);
+        INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
+        REQUIRE(script.script);
+        REQUIRE(level.level.goal->timeLimit);
+        const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
+        CHECK(play(level, *script.script, steps).goalFrame().has_value());
+        CHECK_FALSE(play(level, ScriptDesc{}, steps).goalFrame().has_value());
+    }
+}
+
+TEST_CASE("level errors are file:line:col messages", "[level]") {
+    const std::string floor = "name = \"t\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n";
+    CHECK(firstError(floor + "[[item]]\nkind = \"plank\"\nposition = [0, 1]\nangel = 30\n") ==
+          "t.toml:8:1: unknown key 'angel' in [[item]] of kind 'plank' (did you mean 'angle'?)");
+    CHECK(firstError(floor + "[[item]]\nkind = \"cannnon\"\nposition = [0, 1]\n") ==
+          "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, got 'cannnon' (did you mean 'cannon'?)");
+    CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
+          "t.toml:12:10: unknown target 'U' (defined: T)");
+    CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
+          "t.toml:8:12: unknown cannon or bomb 'gun' (the level has no cannon or bomb)");
+    CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
+          "t.toml:8:12: strength must be between 0 and 10000, got -2");
+    CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
+    CHECK(firstError(floor + "[inventory]\ncannon = 1\n") ==
+          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb)");
+    CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = \"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
+          "t.toml:11:8: the name 'a' is already used at line 6");
+}
+
+TEST_CASE("placements are refused by rule and place", "[level]") {
+    const SceneDesc level = loadLevel("ramp");
+    const auto refusal = [&](std::vector<Placement> placements) {
+        const auto r = checkPlacements(level, placements);
+        return r ? r->message : std::string("accepted");
+    };
+    CHECK(refusal({{ItemKind::ramp, {-4.5, 2.5}, -0.5, "", {}}}) == "accepted");
+    CHECK(refusal({{ItemKind::plank, {-4.5, 2.5}, 0.0, "", {}}}) ==
+          "placement refused: plank at [-4.5, 2.5] exceeds the inventory: the level gives 0 planks and this is number 1");
+    CHECK(refusal({{ItemKind::ramp, {-4.5, 2.5}, 0.0, "", {}}, {ItemKind::ramp, {-4.5, 3.5}, 0.0, "", {}}}).starts_with(
+        "placement refused: ramp at [-4.5, 3.5] exceeds the inventory"));
+    CHECK(refusal({{ItemKind::ramp, {3, 2.5}, 0.0, "", {}}}) ==
+          "placement refused: ramp at [3, 2.5] is not wholly inside a placement zone (it spans [1.45, 2.45] to [4.55, 2.55])");
+    // Overlaps: with a fixed part inside the zone, and with an earlier placement.
+    const SceneDesc crowded = parseLevel("name = \"c\"\n[[item]]\nkind = \"bumper\"\nposition = [0, 0]\n"
+                                         "[inventory]\nheavy = 2\n[[zone]]\nmin = [-3, -3]\nmax = [3, 3]\n");
+    const auto crowdedRefusal = [&](std::vector<Placement> placements) {
+        const auto r = checkPlacements(crowded, placements);
+        return r ? r->message : std::string("accepted");
+    };
+    CHECK(crowdedRefusal({{ItemKind::heavy, {0.6, 0.0}, 0.0, "", {}}}) ==
+          "placement refused: heavy at [0.6, 0] overlaps the fixed bumper");
+    CHECK(crowdedRefusal({{ItemKind::heavy, {0.71, 0.0}, 0.0, "", {}}}) == "accepted");
+    CHECK(crowdedRefusal({{ItemKind::heavy, {2, 0.0}, 0.0, "", {}}, {ItemKind::heavy, {2, 0.5}, 0.0, "", {}}}) ==
+          "placement refused: heavy at [2, 0.5] overlaps placement 1 (heavy)");
+}
+
+TEST_CASE("an aimed gravity shot passes within 1 % of the ball's radius of the aimed point", "[level][aim]") {
+    SceneDesc level = parseLevel("name = \"aim\"\n[world]\ntime_step = 0.01\n[[item]]\nkind = \"cannon\"\nname = \"gun\"\n"
+                                 "position = [0, 0]\nspeed = 12\nammo = \"steel\"\n[goal]\ntext = \"x\"\ncondition = \"all-targets\"\n"
+                                 "[[item]]\nkind = \"target\"\nname = \"far\"\nposition = [100, 100]\n");
+    for (const bool high : {false, true}) {
+        LevelRun run(level, {});
+        const Vec2 aimed{9.0, 2.5};
+        REQUIRE(run.aimAtPoint(0, aimed, high).empty());
+        run.fire(0);
+        const int ball = static_cast<int>(run.world().circles().size()) - 1;
+        const double radius = run.world().circles()[static_cast<std::size_t>(ball)].radius;
+        double closest = 1e9;
+        const Vec2 g = run.world().def().gravity;
+        for (int i = 0; i < 400; ++i) {
+            // Between steps a free ball flies p + v t + g t^2 / 2: look along it, not only at the steps.
+            const Circle c = run.world().circles()[static_cast<std::size_t>(ball)];
+            for (int k = 0; k < 100; ++k) {
+                const double t = 0.01 * k / 100.0;
+                closest = std::min(closest, (c.position + c.velocity * t + g * (0.5 * t * t)).distance(aimed));
+            }
+            run.step();
+        }
+        INFO((high ? "high" : "low") << " arc, closest " << closest);
+        CHECK(closest < 0.01 * radius);
+    }
+    LevelRun run(level, {});
+    CHECK(run.aimAtPoint(0, {60.0, 0.0}, false).starts_with("cannon 'gun' cannot reach [60, 0]: "));
+}
+
+TEST_CASE("a led shot hits a target moving at constant velocity", "[level][aim]") {
+    const SceneDesc level = loadLevel("moving-target");
+    for (const int fireAt : {0, 50, 120}) {
+        INFO("fired at step " << fireAt);
+        LevelRun run(level, {});
+        for (int i = 0; i < fireAt; ++i) run.step();
+        REQUIRE(run.aimAtItem(run.find("gun"), run.find("runner"), false).empty());
+        run.fire(run.find("gun"));
+        for (int i = 0; i < 300 && !run.goalFrame(); ++i) run.step();
+        CHECK(run.goalFrame().has_value());
+    }
+}
+
+TEST_CASE("a bomb pushes only the bodies within its blast radius", "[level][explosion]") {
+    const SceneDesc level = parseLevel("name = \"b\"\n[world]\ngravity = [0, 0]\n[[item]]\nkind = \"bomb\"\nname = \"B\"\n"
+                                       "position = [0, 0]\nblast_radius = 2\nstrength = 4\n[[item]]\nkind = \"steel\"\nposition = [1, 0]\n"
+                                       "[[item]]\nkind = \"steel\"\nposition = [3, 0]\n");
+    LevelRun run(level, {});
+    run.detonate(run.find("B"));
+    const auto circles = run.world().circles();
+    CHECK(circles[1].velocity.x == Approx(4.0 * 0.5 / 4.0)); // J = 4 (1 - 1/2), m = 4 kg
+    CHECK(circles[2].velocity == Vec2{});
+    REQUIRE(run.events().size() == 1);
+    CHECK(run.events()[0].count == 1);
+}

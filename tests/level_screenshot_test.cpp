@@ -69,3 +69,6 @@ TEST_CASE("cannon-arc: first and goal frames", "[screenshot][level]") { checkLev
 TEST_CASE("moving-target: first and goal frames", "[screenshot][level]") { checkLevel("moving-target"); }
 TEST_CASE("chain-reaction: first and goal frames", "[screenshot][level]") { checkLevel("chain-reaction"); }
 TEST_CASE("newton: first and goal frames", "[screenshot][level]") { checkLevel("newton"); }
+TEST_CASE("bucket: first and goal frames", "[screenshot][level]") { checkLevel("bucket"); }
+TEST_CASE("trampoline: first and goal frames", "[screenshot][level]") { checkLevel("trampoline"); }
+TEST_CASE("balloon: first and goal frames", "[screenshot][level]") { checkLevel("balloon"); }

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 
 using namespace rube;
@@ -14,7 +15,8 @@ using namespace rube::game;
 
 namespace {
 
-const char* const kLevels[] = {"ramp", "cannon-arc", "moving-target", "chain-reaction", "newton"};
+const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction",
+                               "newton", "bucket",     "trampoline",    "balloon"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -70,7 +72,7 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
     CHECK(firstError(floor + "[[item]]\nkind = \"cannnon\"\nposition = [0, 1]\n") ==
           "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, got 'cannnon' (did you mean 'cannon'?)");
     CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
-          "t.toml:12:10: unknown target 'U' (defined: T)");
+          "t.toml:12:10: unknown target 'U' (the level has: T)");
     CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
           "t.toml:8:12: unknown cannon or bomb 'gun' (the level has no cannon or bomb)");
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
@@ -162,4 +164,91 @@ TEST_CASE("a bomb pushes only the bodies within its blast radius", "[level][expl
     CHECK(circles[2].velocity == Vec2{});
     REQUIRE(run.events().size() == 1);
     CHECK(run.events()[0].count == 1);
+}
+
+TEST_CASE("the bucket goal needs a ball resting inside it for half a second", "[level]") {
+    const SceneDesc level = parseLevel("name = \"b\"\n[world]\ntime_step = 0.01\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n"
+                                       "[[item]]\nkind = \"bucket\"\nname = \"pail\"\nposition = [0, 0.05]\nwidth = 2\n"
+                                       "[[item]]\nkind = \"heavy\"\nposition = [0, 3]\nvelocity = [0, 0]\n"
+                                       "[goal]\ntext = \"x\"\ncondition = \"ball-in-bucket\"\nbucket = \"pail\"\n");
+    const auto settle = [&](double vx) {
+        SceneDesc moving = level;
+        moving.level.items[1].velocity = {vx, 0.0};
+        LevelRun run(moving, {});
+        for (int i = 0; i < 300 && !run.goalFrame(); ++i) run.step();
+        return run.goalFrame();
+    };
+    // Dropped straight in, it lands after sqrt(2 x 2.6 / 9.81) = 0.73 s and counts 0.5 s later.
+    const auto frame = settle(0.0);
+    REQUIRE(frame);
+    CHECK(*frame >= 72 + 50);
+    CHECK(*frame <= 73 + 50 + 5);
+    // Thrown sideways, it flies over the wall and rests beside the bucket: not in it.
+    CHECK_FALSE(settle(4.0));
+}
+
+TEST_CASE("trampoline: the heavy ball dropped where the bouncy one goes does not clear the wall", "[level]") {
+    const SceneDesc level = loadLevel("trampoline");
+    const std::vector<Placement> heavy{{ItemKind::heavy, {-3.8, 5.8}, 0.0, "", {}}};
+    REQUIRE_FALSE(checkPlacements(level, heavy));
+    LevelRun run(level, heavy);
+    for (int i = 0; i < 800; ++i) run.step();
+    CHECK_FALSE(run.goalFrame());
+}
+
+TEST_CASE("fire-when times a fixed-angle shot so that it hits a moving target", "[level][aim]") {
+    const SceneDesc level = loadLevel("moving-target");
+    const auto playScript = [&](const std::string& actions) {
+        const ScriptLoad load = parseScript("level = \"moving-target\"\n" + actions, "s.toml", level);
+        INFO((load.errors.empty() ? std::string() : load.errors.front().format()));
+        REQUIRE(load.script);
+        return play(level, *load.script, 600);
+    };
+    // The barrel stays at the level's 45 degrees: only the moment of firing is chosen.
+    const LevelRun timed = playScript("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n");
+    REQUIRE(timed.goalFrame());
+    REQUIRE(timed.events().front().kind == EventKind::shot);
+    CHECK(timed.events().front().frame > 100); // it waited for the runner to come near the arc
+    CHECK(timed.states()[static_cast<std::size_t>(timed.find("gun"))].aim == Approx(std::numbers::pi / 4));
+    // Fired at once along the same aim, the shot misses: the timing is what hits.
+    CHECK_FALSE(playScript("[[action]]\nframe = 0\ndo = \"fire\"\nitem = \"gun\"\n").goalFrame());
+    // Fired from the next frames too, the timing still finds the runner.
+    CHECK(playScript("[[action]]\nframe = 90\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n").goalFrame());
+    // Aimed level and away from it, no timing can meet the runner: a reason, not a shot.
+    LevelRun run(level, {});
+    run.aim(run.find("gun"), std::numbers::pi);
+    CHECK(run.fireWhen(run.find("gun"), run.find("runner")).starts_with("cannon 'gun' cannot time a shot at 'runner' at its aim: "));
+    CHECK(run.events().empty());
+}
+
+TEST_CASE("fire-when names a cannon and a target", "[level]") {
+    const SceneDesc level = loadLevel("moving-target");
+    const auto firstScriptError = [&](const std::string& text) {
+        const ScriptLoad load = parseScript("level = \"moving-target\"\n" + text, "s.toml", level);
+        return load.errors.empty() ? std::string("no error") : load.errors.front().format();
+    };
+    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\n") ==
+          "s.toml:2:1: missing required key 'target' in [[action]]");
+    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runer\"\n") ==
+          "s.toml:6:10: unknown target or bomb or switch or bucket 'runer' in level 'moving-target' (did you mean 'runner'?)");
+    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
+          "s.toml:7:1: unknown key 'arc' in [[action]] (known keys: frame, do, item, target)");
+}
+
+TEST_CASE("levels and scripts word a bad reference alike", "[level]") {
+    const std::string floor = "name = \"t\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n";
+    CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nname = \"B\"\nposition = [0, 1]\n[[item]]\nkind = \"target\"\nname = \"T\"\n"
+                             "position = [2, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"B\"\n") ==
+          "t.toml:16:10: target 'B' is a bomb, not a target (the level has: T)");
+    const SceneDesc level = loadLevel("moving-target");
+    const auto scriptError = [&](const std::string& text) {
+        const ScriptLoad load = parseScript("level = \"moving-target\"\n" + text, "s.toml", level);
+        return load.errors.empty() ? std::string("no error") : load.errors.front().format();
+    };
+    CHECK(scriptError("[[action]]\nframe = 0\ndo = \"fire\"\nitem = \"runner\"\n") ==
+          "s.toml:5:8: item 'runner' is a target, not a cannon (the level has: gun)");
+    CHECK(scriptError("[[expect]]\nexplosion = \"gun\"\nbefore_frame = 9\n") ==
+          "s.toml:3:13: explosion 'gun' is a cannon, not a bomb (the level has no bomb)");
+    CHECK(scriptError("[[expect]]\nhit = \"runnr\"\nbefore_frame = 9\n") ==
+          "s.toml:3:7: unknown target or switch 'runnr' in level 'moving-target' (did you mean 'runner'?)");
 }

@@ -73,6 +73,11 @@ struct LevelDesc {
 
 /// The kind's name as files spell it: "heavy", ..., "switch".
 std::string_view itemKindName(ItemKind kind);
+/// "" when `name` is an item of one of `kinds`, else the one-line error for naming it through `key`
+/// ("target 'T' is a bomb, not a target", or "unknown target 'U'" + `where` + a hint): the one
+/// wording for every reference, from a level's goal and switches or from a script.
+std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name,
+                               std::initializer_list<ItemKind> kinds, std::string_view where = "");
 /// Every kind, in the order of the enum.
 inline constexpr ItemKind kAllItemKinds[] = {ItemKind::heavy, ItemKind::bouncy, ItemKind::steel, ItemKind::balloon,
                                              ItemKind::plank, ItemKind::ramp,   ItemKind::bumper, ItemKind::cannon,

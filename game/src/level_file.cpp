@@ -161,26 +161,7 @@ void readZones(TableReader& root, SceneReading& reading) {
 // A name must refer to an item of the right kind; the message lists the ones that would do.
 void checkReference(Diagnostics& diag, SourcePlace place, std::string_view key, const std::string& name,
                     std::initializer_list<ItemKind> kinds, const LevelDesc& level) {
-    const int index = level.find(name);
-    bool right = false;
-    if (index >= 0)
-        for (ItemKind kind : kinds) right = right || level.items[static_cast<std::size_t>(index)].kind == kind;
-    if (right) return;
-    std::vector<std::string_view> candidates;
-    for (const ItemDesc& item : level.items)
-        for (ItemKind kind : kinds)
-            if (item.kind == kind && !item.name.empty()) candidates.push_back(item.name);
-    std::string kindWords;
-    for (ItemKind kind : kinds) kindWords += (kindWords.empty() ? "" : " or ") + std::string(itemKindName(kind));
-    std::string message = index >= 0 ? std::string(key) + " '" + name + "' is a " +
-                                           std::string(itemKindName(level.items[static_cast<std::size_t>(index)].kind)) +
-                                           ", not a " + kindWords
-                                     : "unknown " + kindWords + " '" + name + "'";
-    if (const auto match = closestMatch(name, candidates); match && index < 0)
-        message += " (did you mean '" + std::string(*match) + "'?)";
-    else if (candidates.empty()) message += " (the level has no " + kindWords + ")";
-    else message += " (defined: " + joinNames(candidates) + ")";
-    diag.error(place, std::move(message));
+    if (std::string message = itemReferenceError(level, key, name, kinds); !message.empty()) diag.error(place, std::move(message));
 }
 
 void readGoal(TableReader& root, SceneReading& reading) {

@@ -120,6 +120,20 @@ void LevelRun::fire(int cannon) {
     events_.push_back({EventKind::shot, frame(), world_.time(), item.name, item.position, 0});
 }
 
+std::string LevelRun::fireWhen(int cannon, int target) {
+    const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
+    ItemState& state = states_[static_cast<std::size_t>(cannon)];
+    const ShotTiming timing = timeFixedAngleShot(item.position, Vec2::fromAngle(state.aim), item.speed, itemPosition(target),
+                                                 itemVelocity(target), world_.def().gravity);
+    if (!timing.possible)
+        return "cannon '" + item.name + "' cannot time a shot at '" + items_[static_cast<std::size_t>(target)].name +
+               "' at its aim: " + timing.reason;
+    // Shots leave between steps, so the wait is rounded to the nearest step: off by at most dt / 2.
+    if (timing.delay < 0.5 * world_.def().timeStep) fire(cannon);
+    else state.timedShot = world_.time() + timing.delay;
+    return "";
+}
+
 void LevelRun::detonate(int bomb) {
     ItemState& state = states_[static_cast<std::size_t>(bomb)];
     if (state.detonatedAt) return; // a bomb goes off once
@@ -177,6 +191,10 @@ void LevelRun::step() {
             detonate(static_cast<int>(i));
         if (item.kind == ItemKind::cannon && item.fireAt && !states_[i].fired && world_.time() >= *item.fireAt - 1e-9)
             fire(static_cast<int>(i));
+        if (states_[i].timedShot && world_.time() >= *states_[i].timedShot - 0.5 * dt) {
+            states_[i].timedShot.reset();
+            fire(static_cast<int>(i));
+        }
     }
     checkGoal();
 }

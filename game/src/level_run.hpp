@@ -34,6 +34,7 @@ struct ItemState {
     double aim = 0.0;           ///< cannons: the barrel's angle now, radians
     bool hit = false;           ///< targets and switches: touched by a ball
     bool fired = false;         ///< cannons: have shot
+    std::optional<double> timedShot; ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
 };
 
@@ -82,6 +83,9 @@ public:
     std::string aimAtItem(int cannon, int item, bool highArc);
     /// Fires a cannon: a ball of its ammo kind leaves its pivot at its aim and muzzle speed.
     void fire(int cannon);
+    /// Times a shot along the cannon's present aim to meet `target` (moving at its velocity now) and
+    /// fires it at that step, or now when no wait is needed; "" or why no such shot exists.
+    std::string fireWhen(int cannon, int target);
     /// Sets a bomb off now.
     void detonate(int bomb);
     /// Flips a switch as if a ball had hit it: the item it names goes off.

@@ -103,6 +103,7 @@ std::string takeAction(const Action& a, LevelRun& run) {
     case ActionKind::fire: run.fire(item); return "";
     case ActionKind::detonate: run.detonate(item); return "";
     case ActionKind::toggle: run.toggle(item); return "";
+    case ActionKind::fireWhen: return run.fireWhen(item, run.find(a.target));
     }
     return "";
 }

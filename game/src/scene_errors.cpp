@@ -69,6 +69,13 @@ std::optional<std::string_view> closestMatch(std::string_view word, std::span<co
     return best;
 }
 
+std::string unknownNameHint(std::string_view word, std::span<const std::string_view> candidates, std::string_view label,
+                            std::string_view none) {
+    if (const auto match = closestMatch(word, candidates)) return " (did you mean '" + std::string(*match) + "'?)";
+    if (candidates.empty()) return " (" + std::string(none) + ")";
+    return " (" + std::string(label) + ": " + joinNames(candidates) + ")";
+}
+
 std::string joinNames(std::span<const std::string_view> names) {
     std::string result;
     for (std::size_t i = 0; i < names.size(); ++i) {

@@ -49,6 +49,11 @@ private:
 /// transpositions counting as one), so a message can ask "did you mean 'radius'?".
 std::optional<std::string_view> closestMatch(std::string_view word, std::span<const std::string_view> candidates);
 
+/// The end of an "unknown name" message, so every file words it alike: " (did you mean 'x'?)" for a
+/// likely typo, else " (<label>: a, b)" listing the candidates, or " (<none>)" when there are none.
+std::string unknownNameHint(std::string_view word, std::span<const std::string_view> candidates, std::string_view label,
+                            std::string_view none);
+
 /// "a, b, c": candidates listed for a message.
 std::string joinNames(std::span<const std::string_view> names);
 

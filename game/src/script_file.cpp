@@ -16,10 +16,11 @@ namespace {
 constexpr std::string_view kTopKeys[] = {"level", "steps", "capture", "place", "action", "expect"};
 constexpr std::string_view kCaptureKeys[] = {"size", "every"};
 constexpr std::string_view kPlaceKeys[] = {"kind", "position", "angle", "name"};
-constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle"};
+constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle", "fire-when"};
 constexpr std::string_view kRotateKeys[] = {"frame", "do", "item", "angle"};
 constexpr std::string_view kAimKeys[] = {"frame", "do", "item", "angle", "point", "target", "arc"};
 constexpr std::string_view kItemKeys[] = {"frame", "do", "item"};
+constexpr std::string_view kFireWhenKeys[] = {"frame", "do", "item", "target"};
 constexpr std::string_view kExpectKeys[] = {"goal", "hit", "shot", "explosion", "before_frame"};
 constexpr std::string_view kArcNames[] = {"low", "high"};
 // The longest run a script may ask for: an hour at 60 steps a second.
@@ -30,21 +31,8 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 // The item an action or expectation names must exist and be of the kind it acts on.
 bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level,
                std::initializer_list<ItemKind> kinds) {
-    const int index = level.level.find(name);
-    std::vector<std::string_view> candidates;
-    for (const ItemDesc& item : level.level.items)
-        for (ItemKind kind : kinds)
-            if (item.kind == kind && !item.name.empty()) candidates.push_back(item.name);
-    std::string kindWords;
-    for (ItemKind kind : kinds) kindWords += (kindWords.empty() ? "" : " or ") + std::string(itemKindName(kind));
-    if (index >= 0 && std::find(kinds.begin(), kinds.end(), level.level.items[static_cast<std::size_t>(index)].kind) != kinds.end())
-        return true;
-    std::string message = index >= 0 ? "'" + name + "' is a " + std::string(itemKindName(level.level.items[static_cast<std::size_t>(index)].kind)) +
-                                           ", not a " + kindWords
-                                     : "unknown " + kindWords + " '" + name + "' in level '" + level.name + "'";
-    if (const auto match = closestMatch(name, candidates); match && index < 0) message += " (did you mean '" + std::string(*match) + "'?)";
-    else if (candidates.empty()) message += " (the level has no " + kindWords + ")";
-    else message += " (the level has: " + joinNames(candidates) + ")";
+    std::string message = itemReferenceError(level.level, key, name, kinds, " in level '" + level.name + "'");
+    if (message.empty()) return true;
     table.error(table.valuePlace(key), std::move(message));
     return false;
 }
@@ -93,9 +81,10 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         for (std::size_t i = 0; i < std::size(kDoNames); ++i)
             if (kDoNames[i] == verb->as_string()->get()) index = i;
     const ActionKind kind = index < std::size(kDoNames) ? static_cast<ActionKind>(index) : ActionKind::fire;
-    const std::span<const std::string_view> keys = kind == ActionKind::rotate ? std::span<const std::string_view>(kRotateKeys)
-                                                   : kind == ActionKind::aim  ? std::span<const std::string_view>(kAimKeys)
-                                                                              : std::span<const std::string_view>(kItemKeys);
+    const std::span<const std::string_view> keys = kind == ActionKind::rotate     ? std::span<const std::string_view>(kRotateKeys)
+                                                   : kind == ActionKind::aim      ? std::span<const std::string_view>(kAimKeys)
+                                                   : kind == ActionKind::fireWhen ? std::span<const std::string_view>(kFireWhenKeys)
+                                                                                  : std::span<const std::string_view>(kItemKeys);
     TableReader action(table, "in [[action]]", index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag);
     if (!action.choice("do", kDoNames, Need::required)) return;
     Action a;
@@ -123,6 +112,12 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
     case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
     case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem}); break;
+    case ActionKind::fireWhen:
+        // The cannon keeps its aim; only the moment of firing is worked out, when the action is taken.
+        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        a.target = action.string("target", Need::required).value_or("");
+        if (!a.target.empty()) checkItem(action, "target", a.target, level, {ItemKind::target, ItemKind::bomb, ItemKind::switchItem, ItemKind::bucket});
+        break;
     }
     script.actions.push_back(a);
 }

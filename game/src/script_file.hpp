@@ -14,7 +14,7 @@
 namespace rube::game {
 
 /// What an action does.
-enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle };
+enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle, fireWhen };
 
 /// One action, taken when the run has taken `frame` steps (before the next one).
 struct Action {
@@ -23,7 +23,7 @@ struct Action {
     std::string item;              ///< the cannon, bomb or switch it acts on
     std::optional<double> angle;   ///< rotate, aim: radians
     std::optional<Vec2> point;     ///< aim: a point to hit
-    std::string target;            ///< aim: an item to hit (led when it moves)
+    std::string target;            ///< aim: an item to hit (led when it moves); fire-when: the item to time the shot at
     bool highArc = false;          ///< aim at a point or item: the lobbed arc
     SourcePlace place;             ///< where the script wrote it
 };

@@ -129,3 +129,9 @@ rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.t
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml:3:1: placement refused: ramp at [4, 2.5] is not wholly inside a placement zone (it spans [2.45, 2.45] to [5.55, 2.55])")
 rube_cli_test("level script with an unknown cannon" "run|${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
+# The summary of a level's run: the goal frame, then every event in order with its frame and item.
+# The balloon's chain: the switch is hit and fires the cannon in one step, then the shot hits the target.
+rube_cli_test("level balloon summary.json has the goal frame and the hits"
+              "run|${RUBE_GAME_LEVELS}/balloon.toml|--script|${RUBE_GAME_LEVELS}/balloon.solution.toml|--out|${frames}/balloon|--size|32x18" 0
+              -DFRAMES_DIR=${frames}/balloon "-DSTDOUT_MATCH=goal: +reached at frame 276\n.*summary in ${frames}/balloon/summary.json"
+              "-DSUMMARY_MATCH=\"goal_reached\": true,\n  \"goal_frame\": 276,.*\"kind\": \"hit\", \"frame\": 94, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\].*\"kind\": \"shot\", \"frame\": 94, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"frame\": 276, [^\n]*\"item\": \"bullseye\".*\"kind\": \"goal\", \"frame\": 276,.*\"expect\": \"'bullseye' hit before frame 400\", \"met\": true")

@@ -14,6 +14,7 @@
 #                            no other frame and no temporary (notes.txt survives when seeded)
 #   NO_FRAMES_DIR=ON         afterwards FRAMES_DIR does not exist
 #   BLOCKER=<file>           a plain file created before the run, to stand where a folder should be
+#   SUMMARY_MATCH=<regex>    afterwards FRAMES_DIR/summary.json exists, matches, and left no temporary
 # Arguments are separated by | because a ; would split them on the way through add_test.
 
 string(REPLACE "|" ";" args "${ARGS}")
@@ -128,5 +129,17 @@ if(DEFINED FRAMES)
   list(SORT expected)
   if(NOT written STREQUAL expected)
     fail("${FRAMES_DIR} holds ${written}\nexpected ${expected}")
+  endif()
+endif()
+if(DEFINED SUMMARY_MATCH)
+  if(NOT EXISTS "${FRAMES_DIR}/summary.json")
+    fail("${FRAMES_DIR}/summary.json was not written")
+  endif()
+  file(READ "${FRAMES_DIR}/summary.json" summary)
+  if(NOT summary MATCHES "${SUMMARY_MATCH}")
+    fail("${FRAMES_DIR}/summary.json does not match ${SUMMARY_MATCH}:\n${summary}")
+  endif()
+  if(EXISTS "${FRAMES_DIR}/summary.json.tmp")
+    fail("the run left ${FRAMES_DIR}/summary.json.tmp")
   endif()
 endif()

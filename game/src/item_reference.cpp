@@ -1,0 +1,30 @@
+// References to items by name, from a level's goal and switches or from a script's actions and
+// expectations: one wording for every "unknown" and "wrong kind" message, with the same hints.
+#include "level.hpp"
+
+#include <algorithm>
+
+namespace rube::game {
+
+std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name,
+                               std::initializer_list<ItemKind> kinds, std::string_view where) {
+    const int index = level.find(name);
+    const auto fits = [&](ItemKind kind) { return std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };
+    if (index >= 0 && fits(level.items[static_cast<std::size_t>(index)].kind)) return "";
+    std::string kindWords;
+    for (ItemKind kind : kinds) kindWords += (kindWords.empty() ? "" : " or ") + std::string(itemKindName(kind));
+    // Only names that would do are offered: a typo of a bomb's name is no help where a cannon is wanted.
+    std::vector<std::string_view> candidates;
+    for (const ItemDesc& item : level.items)
+        if (fits(item.kind) && !item.name.empty()) candidates.push_back(item.name);
+    const std::string none = "the level has no " + kindWords;
+    if (index < 0)
+        return "unknown " + kindWords + " '" + std::string(name) + "'" + std::string(where) +
+               unknownNameHint(name, candidates, "the level has", none);
+    // A name of the wrong kind is no typo: list what would do rather than suggest a spelling.
+    return std::string(key) + " '" + std::string(name) + "' is a " +
+           std::string(itemKindName(level.items[static_cast<std::size_t>(index)].kind)) + ", not a " + kindWords +
+           unknownNameHint("", candidates, "the level has", none);
+}
+
+} // namespace rube::game

@@ -5,6 +5,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <fstream>
+#include <sstream>
 
 namespace rube::game {
 
@@ -97,6 +99,24 @@ std::string formatPair(double x, double y) {
     std::string result = "[";
     result.append(formatNumber(x)).append(", ").append(formatNumber(y)).append("]");
     return result;
+}
+
+std::optional<std::string> readTextFile(const std::filesystem::path& file, SceneError& error) {
+    error = SceneError{file.string(), {}, ""};
+    std::error_code ec;
+    // An ifstream opens a directory without complaint on Linux; only reading it fails.
+    std::ifstream in(file, std::ios::binary);
+    if (!in || std::filesystem::is_directory(file, ec)) {
+        error.message = "cannot open file";
+        return std::nullopt;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) {
+        error.message = "cannot read file";
+        return std::nullopt;
+    }
+    return std::move(text).str();
 }
 
 } // namespace rube::game

@@ -4,8 +4,6 @@
 #include "scene_reading.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 namespace rube::game {
 
@@ -199,15 +197,10 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
 }
 
 SceneLoad loadSceneFile(const std::filesystem::path& file) {
-    const std::string fileName = file.string();
-    std::error_code ec;
-    // An ifstream opens a directory without complaint on Linux; only reading it fails.
-    std::ifstream in(file, std::ios::binary);
-    if (!in || std::filesystem::is_directory(file, ec)) return {std::nullopt, {{fileName, {}, "cannot open file"}}};
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return {std::nullopt, {{fileName, {}, "cannot read file"}}};
-    return parseScene(text.str(), fileName);
+    SceneError error;
+    const std::optional<std::string> text = readTextFile(file, error);
+    if (!text) return {std::nullopt, {error}};
+    return parseScene(*text, file.string());
 }
 
 } // namespace rube::game

@@ -5,9 +5,7 @@
 #include "toml_reader.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
 namespace rube::game {
 
@@ -201,13 +199,10 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
 }
 
 ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& level) {
-    const std::string fileName = file.string();
-    std::error_code ec;
-    std::ifstream in(file, std::ios::binary);
-    if (!in || std::filesystem::is_directory(file, ec)) return {std::nullopt, {{fileName, {}, "cannot open file"}}};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseScript(text.str(), fileName, level);
+    SceneError error;
+    const std::optional<std::string> text = readTextFile(file, error);
+    if (!text) return {std::nullopt, {error}};
+    return parseScript(*text, file.string(), level);
 }
 
 } // namespace rube::game

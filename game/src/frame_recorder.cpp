@@ -100,4 +100,18 @@ void ProgressLine::update(std::int64_t frames, double seconds) {
     out_ << line << std::flush;
 }
 
+std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
+                                                 std::ostream& err, std::string_view who, int& exitStatus) {
+    try {
+        return std::make_unique<FrameRecorder>(folder, size);
+    } catch (const OutputFolderError& e) {
+        err << who << ": " << e.what() << '\n';
+        exitStatus = 2;
+    } catch (const std::exception& e) {
+        err << who << ": cannot render: " << e.what() << '\n';
+        exitStatus = 1;
+    }
+    return nullptr;
+}
+
 } // namespace rube::game

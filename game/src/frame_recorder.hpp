@@ -104,4 +104,10 @@ private:
     std::chrono::steady_clock::time_point lastShown_{};
 };
 
+/// Opens a FrameRecorder for the command line: on failure says why in one line on `err` (after
+/// `who`, e.g. "rube run") and sets `exitStatus` to 2 for a folder that cannot be written (bad
+/// input) or 1 when no GL context can be made; returns null then.
+std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
+                                                 std::ostream& err, std::string_view who, int& exitStatus);
+
 } // namespace rube::game

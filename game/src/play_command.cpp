@@ -132,15 +132,9 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     render::DrawList list;
     std::int64_t framesWritten = 0;
     if (!options.out.empty()) {
-        try {
-            recorder = std::make_unique<FrameRecorder>(options.out, size);
-        } catch (const OutputFolderError& e) {
-            err << "rube run: " << e.what() << '\n';
-            return 2;
-        } catch (const std::exception& e) {
-            err << "rube run: cannot render: " << e.what() << '\n';
-            return 1;
-        }
+        int status = 0;
+        recorder = openFrameRecorder(options.out, size, err, "rube run", status);
+        if (!recorder) return status;
         view = std::make_unique<LevelView>(level.name, sceneCamera(frameScene(level, run.world()), size), size);
     }
     const auto record = [&] {

@@ -130,15 +130,9 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     // writes nothing (the trace's temporary file goes with `trace`).
     Recording frames;
     if (recording) {
-        try {
-            frames.recorder = std::make_unique<FrameRecorder>(options.out, options.size);
-        } catch (const OutputFolderError& e) {
-            err << "rube run: " << e.what() << '\n';
-            return 2;
-        } catch (const std::exception& e) {
-            err << "rube run: cannot render: " << e.what() << '\n';
-            return 1;
-        }
+        int status = 0;
+        frames.recorder = openFrameRecorder(options.out, options.size, err, "rube run", status);
+        if (!frames.recorder) return status;
         ViewOptions viewOptions;
         viewOptions.trails = options.trails;
         viewOptions.impacts = options.debugImpacts;

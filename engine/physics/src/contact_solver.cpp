@@ -70,14 +70,26 @@ void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecor
     }
 }
 
-void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, double h, int substep) {
+namespace {
+
+/// One relax sweep; `Measure` selects whether the gaps are computed from the displacements (and
+/// stored) or read back from the first pass of this substep. Same arithmetic either way.
+template <bool Measure>
+void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                std::span<SolverBody> bodies, double* gaps, double h, int substep) {
     const double invH = 1.0 / h;
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const std::size_t n = contacts.size();
+    for (std::size_t k = 0; k < n; ++k) {
         ContactConstraint& c = contacts[k];
         SolverBody& a = bodies[c.a];
         SolverBody& b = bodies[c.b];
-        const double s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
+        double s;
+        if constexpr (Measure) {
+            s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
+            gaps[k] = s;
+        } else {
+            s = gaps[k];
+        }
         const double vn = c.normal.dot(a.velocity - b.velocity);
         // Rigid, no push-out: vn >= 0 when touching, vn >= -s / h when still apart.
         const double delta = -c.normalMass * (vn + std::max(s, 0.0) * invH);
@@ -90,6 +102,14 @@ void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecor
         // A speculative contact may first catch its circle here, after the substep's move.
         if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
     }
+}
+
+} // namespace
+
+void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, std::span<double> gaps, bool measureGaps, double h, int substep) {
+    if (measureGaps) relaxSweep<true>(contacts, records, bodies, gaps.data(), h, substep);
+    else relaxSweep<false>(contacts, records, bodies, gaps.data(), h, substep);
 }
 
 void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,

@@ -66,8 +66,10 @@ void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecor
 
 /// One rigid Gauss-Seidel sweep without position feedback (relax): removes the push-out velocity
 /// the soft solve added, so overlap is corrected in position without gaining energy.
+/// Positions do not move between the relax passes of a substep: the first pass (`gaps` to fill)
+/// measures every contact's gap into `gaps`, the later ones read it back.
 void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, double h, int substep);
+                   std::span<SolverBody> bodies, std::span<double> gaps, bool measureGaps, double h, int substep);
 
 /// Restitution once per step for contacts that touched faster than `threshold`: the normal velocity
 /// becomes C times the approach speed (v' = u - C (v - u), lecture 3), the approach taken one substep

@@ -83,6 +83,8 @@ std::string stepCount(const std::string& text) {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc{} || end != text.data() + text.size() || value < 0)
         return "expected a whole number of steps, 0 or more, got '" + text + "'";
+    // A run longer than this is a typo, not a plan: it would not end this year.
+    if (value > 1'000'000'000) return "expected at most 1000000000 steps, got '" + text + "'";
     return {};
 }
 

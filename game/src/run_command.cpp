@@ -84,6 +84,9 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
     }
 }
 
+// The most steps one run may take, however they are asked for.
+constexpr std::int64_t kMaxRunSteps = 1'000'000'000;
+
 // Steps the run takes: --steps; else enough for --frames; else the scene's duration.
 std::int64_t stepsOf(const RunOptions& options, const SceneDesc& scene) {
     if (options.steps) return *options.steps;
@@ -111,6 +114,12 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     const SceneDesc& scene = *load.scene;
     // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
     if (scene.level.isLevel() || !options.script.empty()) return playLevel(options, scene, out, err);
+    // --steps is capped by its validator and a scene's duration when read; only --frames x --every is left.
+    if (const std::int64_t steps = stepsOf(options, scene); steps > kMaxRunSteps) {
+        err << "rube run: --frames " << *options.frames << " with --every " << options.every << " makes " << steps
+            << " steps, more than the " << kMaxRunSteps << " a run may take" << '\n';
+        return 2;
+    }
     const bool recording = !options.out.empty();
     if (!recording && !options.noRender)
         err << "rube run: note: no frames written without --out DIR (--no-render runs headless without this note)\n";

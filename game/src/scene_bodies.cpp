@@ -18,6 +18,8 @@ constexpr Motion kMotions[] = {Motion::dynamic, Motion::kinematic, Motion::fixed
 
 // One grid may make this many circles: a pile, not a memory exhaustion by a stray zero.
 constexpr std::int64_t kMaxGridCircles = 100'000;
+// And a whole scene at most this many: ten thousand already take seconds a step.
+constexpr std::int64_t kMaxSceneCircles = 100'000;
 
 Material readMaterial(TableReader& table) {
     Material material;
@@ -72,6 +74,11 @@ void readCircleGrid(const toml::table& table, SceneReading& reading) {
                                                 " circles; one grid may make at most " + std::to_string(kMaxGridCircles));
         return;
     }
+    if (const auto total = static_cast<std::int64_t>(reading.scene.circles.size()) + *columns * *rows; total > kMaxSceneCircles) {
+        grid.error(grid.tablePlace(), "this circle_grid brings the scene to " + std::to_string(total) +
+                                          " circles, more than the " + std::to_string(kMaxSceneCircles) + " a scene may have");
+        return;
+    }
     // Neighbours closer than a diameter would start inside each other and fly apart on the first step.
     const double diameter = 2.0 * def.radius;
     if ((*columns > 1 && spacing->x < diameter) || (*rows > 1 && spacing->y < diameter)) {
@@ -116,7 +123,13 @@ void readSegment(const toml::table& table, SceneReading& reading) {
 } // namespace
 
 void readCircles(TableReader& root, SceneReading& reading) {
-    for (const toml::table* table : root.arrayOfTables("circle")) readCircle(*table, reading);
+    const auto tables = root.arrayOfTables("circle");
+    if (static_cast<std::int64_t>(tables.size()) > kMaxSceneCircles) {
+        reading.diag.error(placeOf(tables[kMaxSceneCircles]->source()), "too many [[circle]] tables: " + std::to_string(tables.size()) +
+                                                                          ", more than the " + std::to_string(kMaxSceneCircles) + " circles a scene may have");
+        return;
+    }
+    for (const toml::table* table : tables) readCircle(*table, reading);
 }
 
 void readCircleGrids(TableReader& root, SceneReading& reading) {

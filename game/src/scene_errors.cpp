@@ -110,6 +110,12 @@ std::optional<std::string> readTextFile(const std::filesystem::path& file, Scene
         error.message = "cannot open file";
         return std::nullopt;
     }
+    // Scenes, levels and scripts are written by hand: a file this big is a mistake (or not a
+    // scene at all), and reading it whole would only waste memory before failing anyway.
+    if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxTextFileBytes) {
+        error.message = "file too large: " + std::to_string(size) + " bytes, at most " + std::to_string(kMaxTextFileBytes) + " (4 MiB)";
+        return std::nullopt;
+    }
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) {

@@ -1,6 +1,7 @@
 #pragma once
 /// Scene errors: what went wrong and where, collected so `rube check` can list every one.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -64,8 +65,12 @@ std::string formatNumber(double value);
 /// A pair as a scene file writes it: "[0.5, -1]".
 std::string formatPair(double x, double y);
 
+/// The largest scene, level or script file read: 4 MiB.
+inline constexpr std::uintmax_t kMaxTextFileBytes = 4u << 20;
+
 /// The whole text of a file, or nothing with `error` set to "cannot open file" (also for a
-/// folder) or "cannot read file", so every loader words an unreadable file the same way.
+/// folder), "file too large: ..." (over kMaxTextFileBytes) or "cannot read file", so every
+/// loader words an unreadable file the same way.
 std::optional<std::string> readTextFile(const std::filesystem::path& file, SceneError& error);
 
 } // namespace rube::game

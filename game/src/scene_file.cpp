@@ -26,14 +26,6 @@ constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},  {"time_step", "[world]
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
 
-// toml++ says "Error while parsing key-value pair: expected value"; keep its precise words but
-// make it read as one of ours: "syntax error in key-value pair: expected value".
-std::string syntaxMessage(std::string_view description) {
-    constexpr std::string_view prefix = "Error while parsing ";
-    if (description.starts_with(prefix)) return "syntax error in " + std::string(description.substr(prefix.size()));
-    return "syntax error: " + std::string(description);
-}
-
 // A box written as min and max corners, max above and to the right of min; `what` names it in errors.
 std::optional<Aabb> readBox(TableReader& box, std::string_view what) {
     const auto min = box.vec2("min", Need::required);

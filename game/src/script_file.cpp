@@ -173,7 +173,7 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
     try {
         document = toml::parse(text, std::string_view(fileName));
     } catch (const toml::parse_error& e) {
-        diag.error(placeOf(e.source()), "syntax error: " + std::string(e.description()));
+        diag.error(placeOf(e.source()), syntaxMessage(e.description()));
         return {std::nullopt, diag.sorted()};
     }
     ScriptDesc script;

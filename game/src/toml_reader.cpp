@@ -36,6 +36,12 @@ std::string NumberRange::describe() const {
     return (minExcluded ? "greater than " : "at least ") + formatNumber(min);
 }
 
+std::string syntaxMessage(std::string_view description) {
+    constexpr std::string_view prefix = "Error while parsing ";
+    if (description.starts_with(prefix)) return "syntax error in " + std::string(description.substr(prefix.size()));
+    return "syntax error: " + std::string(description);
+}
+
 std::optional<double> readNumber(const toml::node& node, std::string_view what, Diagnostics& diag) {
     double value = 0.0;
     if (const auto* i = node.as_integer()) value = static_cast<double>(i->get());
@@ -47,6 +53,12 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
     // TOML allows nan and inf; no physical quantity in a scene may be either.
     if (!std::isfinite(value)) {
         diag.error(placeOf(node.source()), std::string(what) + " must be finite, got " + formatNumber(value));
+        return std::nullopt;
+    }
+    // Nor so large that squaring it (distances, energies) overflows: no scene needs more than a
+    // billion of any unit, and 1e300 is a typo that would turn into infinities a few steps in.
+    if (std::abs(value) > kMaxNumberMagnitude) {
+        diag.error(placeOf(node.source()), std::string(what) + " must be between -1e9 and 1e9, got " + formatNumber(value));
         return std::nullopt;
     }
     return value;

@@ -53,8 +53,16 @@ struct KeyHome {
     std::string_view home; ///< the table it belongs in, as the message shows it: "[world]"
 };
 
-/// Reads a node as a finite number (TOML integers count), or reports
-/// "`what` must be a number, got string" or "`what` must be finite, got nan" at the node.
+/// toml++ says "Error while parsing key-value pair: expected value"; this keeps its precise words but
+/// makes them read as one of ours, in scenes and scripts alike: "syntax error in key-value pair: expected value".
+std::string syntaxMessage(std::string_view description);
+
+/// The largest magnitude any number in a scene or script may have: 1e9 (of metres, seconds, kilograms...).
+inline constexpr double kMaxNumberMagnitude = 1e9;
+
+/// Reads a node as a finite number (TOML integers count) of at most kMaxNumberMagnitude, or reports
+/// "`what` must be a number, got string", "`what` must be finite, got nan" or
+/// "`what` must be between -1e9 and 1e9, got 1e+300" at the node.
 std::optional<double> readNumber(const toml::node& node, std::string_view what, Diagnostics& diag);
 
 /// Reads the values of one table. Construction reports every key the table may not hold,

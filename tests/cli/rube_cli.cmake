@@ -63,6 +63,8 @@ if(DEFINED STDERR_FIXTURE)
     fail("${STDERR_FIXTURE} has no '# expect: line:col: message' line")
   endif()
   string(REGEX REPLACE "^# expect: " "" expect "${expect}")
+  # file(STRINGS) escapes a ';' in the line as a list would; a message may hold one.
+  string(REPLACE "\\;" ";" expect "${expect}")
   set(STDERR_LINE "${STDERR_FIXTURE}:${expect}")
 endif()
 if(DEFINED STDERR_LINE AND NOT err STREQUAL "${STDERR_LINE}\n")

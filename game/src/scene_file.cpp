@@ -162,13 +162,9 @@ std::optional<int> readPathReference(TableReader& table, SceneReading& reading) 
 
 SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     Diagnostics diag(fileName);
-    toml::table document;
-    try {
-        document = toml::parse(text, std::string_view(fileName));
-    } catch (const toml::parse_error& e) {
-        diag.error(placeOf(e.source()), syntaxMessage(e.description()));
-        return {std::nullopt, diag.sorted()};
-    }
+    std::optional<toml::table> parsed = parseToml(text, fileName, diag);
+    if (!parsed) return {std::nullopt, diag.sorted()};
+    toml::table& document = *parsed;
     SceneDesc scene;
     SceneReading reading{diag, scene, {}, {}};
     TableReader root(document, "at the top level", kTopKeys, diag, kTopHomes, kLevelKeys);

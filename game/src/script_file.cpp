@@ -169,13 +169,9 @@ std::string Expectation::describe() const {
 
 ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level) {
     Diagnostics diag(fileName);
-    toml::table document;
-    try {
-        document = toml::parse(text, std::string_view(fileName));
-    } catch (const toml::parse_error& e) {
-        diag.error(placeOf(e.source()), syntaxMessage(e.description()));
-        return {std::nullopt, diag.sorted()};
-    }
+    std::optional<toml::table> parsed = parseToml(text, fileName, diag);
+    if (!parsed) return {std::nullopt, diag.sorted()};
+    toml::table& document = *parsed;
     ScriptDesc script;
     TableReader root(document, "at the top level of a script", kTopKeys, diag);
     if (const auto name = root.string("level", Need::required)) {

@@ -42,6 +42,15 @@ std::string syntaxMessage(std::string_view description) {
     return "syntax error: " + std::string(description);
 }
 
+std::optional<toml::table> parseToml(std::string_view text, const std::string& fileName, Diagnostics& diag) {
+    try {
+        return toml::parse(text, std::string_view(fileName));
+    } catch (const toml::parse_error& e) {
+        diag.error(placeOf(e.source()), syntaxMessage(e.description()));
+        return std::nullopt;
+    }
+}
+
 std::optional<double> readNumber(const toml::node& node, std::string_view what, Diagnostics& diag) {
     double value = 0.0;
     if (const auto* i = node.as_integer()) value = static_cast<double>(i->get());

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -56,6 +57,9 @@ struct KeyHome {
 /// toml++ says "Error while parsing key-value pair: expected value"; this keeps its precise words but
 /// makes them read as one of ours, in scenes and scripts alike: "syntax error in key-value pair: expected value".
 std::string syntaxMessage(std::string_view description);
+
+/// Parses TOML text, or records its syntax error (one line, at its place) in `diag` and returns nothing.
+std::optional<toml::table> parseToml(std::string_view text, const std::string& fileName, Diagnostics& diag);
 
 /// The largest magnitude any number in a scene or script may have: 1e9 (of metres, seconds, kilograms...).
 inline constexpr double kMaxNumberMagnitude = 1e9;

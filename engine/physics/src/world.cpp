@@ -1,6 +1,7 @@
 // World: owns the bodies, moves kinematic bodies along their paths, delegates the step to its method.
 #include "rube/physics/world.hpp"
 
+#include "field_forces.hpp"
 #include "step_method.hpp"
 
 #include <cmath>
@@ -47,6 +48,7 @@ int World::addCircle(const CircleDef& d) {
     c.material = d.material;
     c.motion = d.motion;
     c.path = d.motion == Motion::kinematic ? d.path : -1;
+    c.magnetic = d.magnetic;
     if (c.path < 0 && c.motion == Motion::kinematic) c.motion = Motion::fixed;
     circles_.push_back(c);
     escaped_.push_back(0);
@@ -98,6 +100,9 @@ void World::step() {
     moveKinematicBodies();
     impacts_.clear();
     const double dt = def_.timeStep;
+    // Model no more than a scene needs: a world without fields never enters the pass.
+    if (def_.airDrag.active() || !fields_.empty())
+        applyFields(circles_, fields_, def_.airDrag, def_.gravity, time_, dt);
     // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;

@@ -44,6 +44,7 @@ struct Circle {
     Motion motion = Motion::dynamic;
     int path = -1;            ///< index of its KinematicPath, or -1
     Vec2 origin;              ///< where it was placed: the path's offsets are added to this
+    bool magnetic = false;    ///< magnets pull it (steel)
 };
 
 /// A two-sided line segment from a to b with rounded line caps of `radius` at both ends.
@@ -69,6 +70,7 @@ struct CircleDef {
     Material material;
     Motion motion = Motion::dynamic;
     int path = -1;
+    bool magnetic = false;    ///< magnets pull it (steel)
 };
 
 /// What a caller fills in to add a segment; the default is a static line of zero thickness.

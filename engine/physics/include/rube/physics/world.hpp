@@ -2,6 +2,7 @@
 /// World: the bodies, the time-step method that advances them, and what happened in each step.
 
 #include "rube/physics/body.hpp"
+#include "rube/physics/fields.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -41,6 +42,7 @@ struct WorldDef {
     int maxEventsPerStep = 4096; ///< impacts one step may resolve before it gives up (counted as a cap hit)
     double restingSpeed = 0.0;  ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
     int substeps = 8;           ///< solver only: substeps per step
+    AirDrag airDrag;            ///< drag of still air on every dynamic circle; none by default
 };
 
 /// What kind of thing a circle hit.
@@ -85,6 +87,10 @@ public:
     /// Adds a scripted path for kinematic bodies and returns its index.
     int addPath(KinematicPath path);
 
+    /// The world's winds, magnets and thrusters: add to them, or switch them, between steps.
+    Fields& fields() { return fields_; }
+    const Fields& fields() const { return fields_; }
+
     /// Advances the world by one time step with its method.
     void step();
     /// Switches the time-step method (for running any scene under every method).
@@ -110,6 +116,7 @@ private:
     std::vector<Circle> circles_;
     std::vector<Segment> segments_;
     std::vector<KinematicPath> paths_;
+    Fields fields_;
     std::vector<Impact> impacts_;
     std::vector<std::uint8_t> escaped_;
     std::unique_ptr<StepMethod> method_;

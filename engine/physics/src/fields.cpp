@@ -1,0 +1,65 @@
+// Fields: air drag, wind, magnets and thrusters as velocity changes before the method's step.
+#include "field_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rube {
+
+namespace {
+
+// Linear drag on top of gravity, dv/dt = g - k v, has the exact solution
+// v(dt) = v e^{-k dt} + g (1 - e^{-k dt}) / k. The method adds g dt itself afterwards, so the kick
+// is the difference: then a falling ball's speed after each step is exact, and the terminal speed
+// is g / k to round-off at any time step. (1 - e^{-x}) is -expm1(-x), exact for small k dt.
+Vec2 linearDragKick(Vec2 v, Vec2 gravity, double k, double dt) {
+    const double decay = std::exp(-k * dt);
+    const double gain = -std::expm1(-k * dt) / k;
+    return v * decay + gravity * gain - (v + gravity * dt);
+}
+
+// Quadratic drag has no closed form with gravity in 2-D; v <- v / (1 + k |v| dt) is the
+// implicit Euler step of dv/dt = -k |v| v, stable at any speed (it never reverses v).
+Vec2 quadraticDragKick(Vec2 v, double k, double dt) { return v / (1.0 + k * v.length() * dt) - v; }
+
+// Wind: linear drag relative to the moving air, dv/dt = k (u - v), exact: v(dt) = u + (v - u) e^{-k dt}.
+Vec2 windKick(Vec2 v, Vec2 air, double k, double dt) { return (v - air) * std::expm1(-k * dt); }
+
+// The part of [start, end) that lies within [t0, t1): how long a thruster burns during the step.
+double overlap(double start, double end, double t0, double t1) { return std::max(0.0, std::min(end, t1) - std::max(start, t0)); }
+
+} // namespace
+
+Vec2 magnetForce(const Magnet& magnet, Vec2 position) {
+    const Vec2 d = magnet.position - position;
+    const double distance = d.length();
+    if (!magnet.on || distance >= magnet.reach || distance == 0.0) return {};
+    // F = strength / d^2 towards the magnet, held at its value at the radius inside it.
+    const double clamped = std::max(distance, magnet.radius);
+    return d * (magnet.strength / (clamped * clamped * distance));
+}
+
+void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag& airDrag, Vec2 gravity, double time,
+                 double dt) {
+    for (Circle& c : circles) {
+        if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
+        const double width = 2.0 * c.radius;
+        Vec2 kick;
+        if (airDrag.linear > 0.0) kick += linearDragKick(c.velocity, gravity, width * airDrag.linear * c.inverseMass, dt);
+        if (airDrag.quadratic > 0.0) kick += quadraticDragKick(c.velocity, width * airDrag.quadratic * c.inverseMass, dt);
+        for (const Wind& wind : fields.winds)
+            if (wind.on && wind.contains(c.position))
+                kick += windKick(c.velocity, wind.airVelocity(), width * wind.drag * c.inverseMass, dt);
+        if (c.magnetic)
+            for (const Magnet& magnet : fields.magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
+        c.velocity += kick;
+    }
+    for (const Thruster& thruster : fields.thrusters) {
+        if (thruster.circle < 0 || static_cast<std::size_t>(thruster.circle) >= circles.size()) continue;
+        Circle& c = circles[static_cast<std::size_t>(thruster.circle)];
+        // Delta v = F t / m over the time it burns within this step (lecture 3: impulse = change of momentum).
+        c.velocity += thruster.force * (c.inverseMass * overlap(thruster.start, thruster.end, time, time + dt));
+    }
+}
+
+} // namespace rube

@@ -1,0 +1,146 @@
+// Fields against their analytic answers: terminal speed under linear drag, the decay towards the
+// wind's speed, a magnet's inverse-square pull, a thruster's impulse, and that a world without
+// fields is untouched by them.
+#include "rube/physics/fields.hpp"
+#include "rube/physics/world.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace rube;
+
+namespace {
+
+// A world with nothing to collide with, so only gravity and the fields act.
+World openWorld(Method method, Vec2 gravity = {0.0, -9.81}, AirDrag drag = {}) {
+    WorldDef def;
+    def.gravity = gravity;
+    def.method = method;
+    def.airDrag = drag;
+    return World(def);
+}
+
+int addBall(World& world, double mass, double radius = 0.5, Vec2 velocity = {}, bool magnetic = false) {
+    CircleDef ball;
+    ball.mass = mass;
+    ball.radius = radius;
+    ball.velocity = velocity;
+    ball.magnetic = magnetic;
+    return world.addCircle(ball);
+}
+
+constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver};
+
+} // namespace
+
+TEST_CASE("fields: a falling ball under linear drag reaches the terminal speed m g / k", "[fields][drag]") {
+    // k = 2r linear = 1 * 0.8 = 0.8 N s/m; m = 2 kg: v_t = m g / k = 24.525 m/s; time constant m / k = 2.5 s.
+    const double m = 2.0, g = 9.81, k = 0.8;
+    for (const Method method : kMethods) {
+        CAPTURE(methodName(method));
+        World world = openWorld(method, {0.0, -g}, AirDrag{0.8, 0.0});
+        addBall(world, m, 0.5);
+        for (int i = 0; i < 60 * 30; ++i) world.step(); // 12 time constants
+        const double terminal = m * g / k;
+        CHECK(world.circles()[0].velocity.y == Approx(-terminal).epsilon(0.01));
+        // The drag is integrated exactly with gravity, so at any step the speed is the analytic
+        // v(t) = v_t (1 - e^{-k t / m}), not just its limit.
+        World early = openWorld(method, {0.0, -g}, AirDrag{0.8, 0.0});
+        addBall(early, m, 0.5);
+        for (int i = 0; i < 60; ++i) early.step();
+        const double t = early.time();
+        CHECK(early.circles()[0].velocity.y == Approx(-terminal * -std::expm1(-k * t / m)).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("fields: quadratic drag slows a ball to sqrt(m g / k)", "[fields][drag]") {
+    // F = 2r quadratic v^2 = m g at the terminal speed: v_t = sqrt(m g / (2r quadratic)).
+    const double m = 1.0, g = 9.81, quadratic = 0.28, r = 0.25;
+    World world = openWorld(Method::exact, {0.0, -g}, AirDrag{0.0, quadratic});
+    addBall(world, m, r);
+    for (int i = 0; i < 60 * 60; ++i) world.step();
+    CHECK(-world.circles()[0].velocity.y == Approx(std::sqrt(m * g / (2.0 * r * quadratic))).epsilon(0.01));
+}
+
+TEST_CASE("fields: drag weighs a heavy ball less than a light one of the same size", "[fields][drag]") {
+    World world = openWorld(Method::exact, {0.0, -9.81}, AirDrag{0.5, 0.2});
+    const int light = addBall(world, 0.2, 0.3);
+    const int heavy = addBall(world, 5.0, 0.3);
+    world.circles()[1].position.x = 5.0;
+    for (int i = 0; i < 120; ++i) world.step();
+    CHECK(world.circles()[heavy].velocity.y < world.circles()[light].velocity.y);
+}
+
+TEST_CASE("fields: a ball in a fan's wind approaches the air's speed as u + (v0 - u) e^{-k t / m}", "[fields][wind]") {
+    World world = openWorld(Method::exact, {0.0, 0.0});
+    const int ball = addBall(world, 1.0, 0.5, {0.0, 0.0});
+    world.fields().winds.push_back(Wind{{-100, 0}, {1, 0}, 200, 200, 3.0, 0.5});
+    for (int i = 0; i < 90; ++i) world.step();
+    const double k = 2.0 * 0.5 * 0.5; // 2r drag / m
+    CHECK(world.circles()[ball].velocity.x == Approx(3.0 * -std::expm1(-k * world.time())).epsilon(1e-9));
+    CHECK(world.circles()[ball].velocity.y == 0.0);
+
+    SECTION("outside the region, or with the fan off, nothing happens") {
+        World still = openWorld(Method::exact, {0.0, 0.0});
+        addBall(still, 1.0);
+        still.fields().winds.push_back(Wind{{1, 0}, {1, 0}, 5, 4, 3.0, 0.5});   // blows away from the ball: behind the fan
+        still.fields().winds.push_back(Wind{{-1, 2}, {1, 0}, 5, 3.9, 3.0, 0.5}); // the ball is 2 m off the axis, outside a 3.9 m column
+        still.fields().winds.push_back(Wind{{-9, 0}, {1, 0}, 20, 9, 3.0, 0.5, false}); // switched off
+        for (int i = 0; i < 30; ++i) still.step();
+        CHECK(still.circles()[0].velocity == Vec2{});
+    }
+}
+
+TEST_CASE("fields: a magnet pulls steel with strength / d^2 and leaves other balls alone", "[fields][magnet]") {
+    Magnet magnet;
+    magnet.position = {0.0, 0.0};
+    magnet.strength = 2.0;
+    magnet.radius = 0.2;
+    for (const double d : {0.5, 1.0, 3.0}) {
+        const Vec2 f = magnetForce(magnet, {d, 0.0});
+        CHECK(f.x == Approx(-2.0 / (d * d)).epsilon(1e-12));
+        CHECK(f.y == 0.0);
+    }
+    // Held at the radius inside it, zero at and past the reach, finite at the very centre.
+    CHECK(magnetForce(magnet, {0.1, 0.0}).x == Approx(-2.0 / 0.04));
+    CHECK(magnetForce(magnet, {0.0, 0.0}) == Vec2{});
+    magnet.reach = 2.0;
+    CHECK(magnetForce(magnet, {2.0, 0.0}) == Vec2{});
+
+    World world = openWorld(Method::exact, {0.0, 0.0});
+    const int steel = addBall(world, 4.0, 0.2, {}, true);
+    const int rubber = addBall(world, 4.0, 0.2, {}, false);
+    world.circles()[steel].position = {2.0, 0.0};
+    world.circles()[rubber].position = {0.0, 2.0};
+    world.fields().magnets.push_back(Magnet{{0.0, 0.0}, 2.0, 0.2});
+    world.step();
+    // One step's kick: Delta v = F dt / m = (2 / 2^2) (1/60) / 4.
+    CHECK(world.circles()[steel].velocity.x == Approx(-0.5 / 60.0 / 4.0).epsilon(1e-12));
+    CHECK(world.circles()[rubber].velocity == Vec2{});
+}
+
+TEST_CASE("fields: a thruster gives F t / m over the time it burns, even mid-step", "[fields][thruster]") {
+    World world = openWorld(Method::exact, {0.0, 0.0});
+    const int rocket = addBall(world, 2.0);
+    // Lights a third of the way into step 6 and burns 1.5 s: Delta v = 10 N * 1.5 s / 2 kg = 7.5 m/s.
+    world.fields().thrusters.push_back(Thruster{rocket, {10.0, 0.0}, 6.33 / 60.0, 6.33 / 60.0 + 1.5});
+    for (int i = 0; i < 180; ++i) world.step();
+    CHECK(world.circles()[rocket].velocity.x == Approx(7.5).epsilon(1e-12));
+}
+
+TEST_CASE("fields: a world without fields moves exactly as before", "[fields]") {
+    // The pass is skipped, not run with zeros: states are bit-identical to a plain fall.
+    World plain = openWorld(Method::exact);
+    World empty = openWorld(Method::exact);
+    addBall(plain, 1.0, 0.5, {1.0, 2.0});
+    addBall(empty, 1.0, 0.5, {1.0, 2.0});
+    empty.fields().winds.push_back(Wind{{50, 50}, {1, 0}, 5, 1, 3.0, 0.5}); // far away: the pass runs, adds 0
+    for (int i = 0; i < 100; ++i) {
+        plain.step();
+        empty.step();
+    }
+    CHECK(stateHash(plain) == stateHash(empty));
+    const double t = plain.time();
+    CHECK(plain.circles()[0].position.y == Approx(2.0 * t - 0.5 * 9.81 * t * t).margin(1e-9));
+}

@@ -70,16 +70,16 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
     CHECK(firstError(floor + "[[item]]\nkind = \"plank\"\nposition = [0, 1]\nangel = 30\n") ==
           "t.toml:8:1: unknown key 'angel' in [[item]] of kind 'plank' (did you mean 'angle'?)");
     CHECK(firstError(floor + "[[item]]\nkind = \"cannnon\"\nposition = [0, 1]\n") ==
-          "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, got 'cannnon' (did you mean 'cannon'?)");
+          "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, magnet, fan, got 'cannnon' (did you mean 'cannon'?)");
     CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
           "t.toml:12:10: unknown target 'U' (the level has: T)");
     CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
-          "t.toml:8:12: unknown cannon or bomb 'gun' (the level has no cannon or bomb)");
+          "t.toml:8:12: unknown cannon, bomb, fan or magnet 'gun' (the level has no cannon, bomb, fan or magnet)");
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
           "t.toml:8:12: strength must be between 0 and 10000, got -2");
     CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
     CHECK(firstError(floor + "[inventory]\ncannon = 1\n") ==
-          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb)");
+          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb, magnet, fan)");
     CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = \"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
           "t.toml:11:8: the name 'a' is already used at line 6");
 }
@@ -230,7 +230,7 @@ TEST_CASE("fire-when names a cannon and a target", "[level]") {
     CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\n") ==
           "s.toml:2:1: missing required key 'target' in [[action]]");
     CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runer\"\n") ==
-          "s.toml:6:10: unknown target or bomb or switch or bucket 'runer' in level 'moving-target' (did you mean 'runner'?)");
+          "s.toml:6:10: unknown target, bomb, switch or bucket 'runer' in level 'moving-target' (did you mean 'runner'?)");
     CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
           "s.toml:7:1: unknown key 'arc' in [[action]] (known keys: frame, do, item, target)");
 }

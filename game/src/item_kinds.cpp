@@ -10,7 +10,7 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kNames[] = {"heavy", "bouncy", "steel", "balloon", "plank",  "ramp",
-                                       "bumper", "cannon", "bomb",  "target",  "bucket", "switch"};
+                                       "bumper", "cannon", "bomb",  "target",  "bucket", "switch", "magnet", "fan"};
 
 // A kind's defaults. A pair's bounciness is the product of both (lecture 3), so a dull heavy
 // ball stays dull on a lively plank and a bouncy ball stays lively on a bumper.
@@ -34,6 +34,8 @@ KindDefaults defaultsOf(ItemKind kind) {
     case ItemKind::target: return {0.3, 0.0, 0.5};
     case ItemKind::bucket: return {1.2, 0.0, 0.1};
     case ItemKind::switchItem: return {0.2, 0.0, 0.5};
+    case ItemKind::magnet: return {0.25, 0.0, 0.3};
+    case ItemKind::fan: return {1.0, 0.0, 0.3};
     }
     return {0.3, 1.0, 0.5};
 }
@@ -42,6 +44,19 @@ KindDefaults defaultsOf(ItemKind kind) {
 constexpr double kBoardRadius = 0.05;
 // A bucket's walls are this tall unless the level says otherwise.
 constexpr double kBucketHeight = 0.8;
+// A magnet's default pull at 1 m, N m^2: holds a 4 kg steel ball against gravity from about 0.7 m.
+constexpr double kMagnetStrength = 20.0;
+// A fan's air: this fast, this far, and this much drag per metre of a ball's width.
+constexpr double kFanSpeed = 6.0;
+constexpr double kFanReach = 4.0;
+constexpr double kFanDrag = 2.0;
+constexpr double kMagnetReach = 3.0;
+
+// A fan's housing: a board across its face, `size` wide, turned to blow along its angle.
+std::pair<Vec2, Vec2> fanEnds(const ItemDesc& item) {
+    const Vec2 across = Vec2::fromAngle(item.angle).perpendicular() * (0.5 * item.size);
+    return {item.position - across, item.position + across};
+}
 
 // The two ends of a plank or ramp: `length` long, centred on its position, tilted by its angle.
 std::pair<Vec2, Vec2> boardEnds(const ItemDesc& item) {
@@ -65,7 +80,7 @@ bool isBall(ItemKind kind) {
 
 bool isPlaceable(ItemKind kind) {
     return isBall(kind) || kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::bumper ||
-           kind == ItemKind::bomb;
+           kind == ItemKind::bomb || kind == ItemKind::magnet || kind == ItemKind::fan;
 }
 
 ItemDesc defaultItem(ItemKind kind, Vec2 position) {
@@ -74,9 +89,10 @@ ItemDesc defaultItem(ItemKind kind, Vec2 position) {
     item.position = position;
     item.size = defaultsOf(kind).size;
     item.height = kBucketHeight;
-    item.speed = 8.0;
+    item.speed = kind == ItemKind::fan ? kFanSpeed : 8.0;
     item.blastRadius = 2.0;
-    item.strength = 6.0;
+    item.strength = kind == ItemKind::magnet ? kMagnetStrength : 6.0;
+    item.reach = kind == ItemKind::fan ? kFanReach : kMagnetReach;
     // A placed bomb has no fuse or switch to wait for: it goes off when something hits it.
     item.trigger = Trigger::impact;
     return item;
@@ -94,6 +110,7 @@ ItemBodies itemBodies(const ItemDesc& item) {
         ball.radius = item.size;
         ball.mass = defaults.mass;
         ball.material = material;
+        ball.magnetic = item.kind == ItemKind::steel;
         bodies.circles.push_back(ball);
         return bodies;
     }
@@ -116,6 +133,24 @@ ItemBodies itemBodies(const ItemDesc& item) {
         break;
     }
     case ItemKind::cannon: break; // a cannon is scenery: its shots must not hit its own barrel
+    case ItemKind::fan: {
+        const auto [a, b] = fanEnds(item);
+        bodies.segments.push_back({a, b, kBoardRadius, material, -1});
+        // The air column starts at the housing's face, so a ball resting on the housing is not blown through it.
+        Wind wind;
+        wind.direction = Vec2::fromAngle(item.angle);
+        wind.origin = item.position + wind.direction * kBoardRadius;
+        wind.length = item.reach;
+        wind.width = item.size;
+        wind.speed = item.speed;
+        wind.drag = kFanDrag;
+        wind.on = item.on;
+        bodies.wind = wind;
+        break;
+    }
+    case ItemKind::magnet:
+        bodies.magnet = Magnet{item.position, item.strength, item.size, item.reach, item.on};
+        [[fallthrough]];
     default: {
         CircleDef part;
         part.position = item.position;
@@ -133,6 +168,11 @@ ItemBodies itemBodies(const ItemDesc& item) {
 Aabb itemExtent(const ItemDesc& item) {
     if (item.kind == ItemKind::plank || item.kind == ItemKind::ramp) {
         const auto [a, b] = boardEnds(item);
+        const Vec2 pad{kBoardRadius, kBoardRadius};
+        return {Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - pad, Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + pad};
+    }
+    if (item.kind == ItemKind::fan) {
+        const auto [a, b] = fanEnds(item);
         const Vec2 pad{kBoardRadius, kBoardRadius};
         return {Vec2{std::min(a.x, b.x), std::min(a.y, b.y)} - pad, Vec2{std::max(a.x, b.x), std::max(a.y, b.y)} + pad};
     }

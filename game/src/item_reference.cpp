@@ -11,8 +11,14 @@ std::string itemReferenceError(const LevelDesc& level, std::string_view key, std
     const int index = level.find(name);
     const auto fits = [&](ItemKind kind) { return std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };
     if (index >= 0 && fits(level.items[static_cast<std::size_t>(index)].kind)) return "";
+    // "target", "cannon or bomb", "cannon, bomb, fan or magnet".
     std::string kindWords;
-    for (ItemKind kind : kinds) kindWords += (kindWords.empty() ? "" : " or ") + std::string(itemKindName(kind));
+    std::size_t i = 0;
+    for (ItemKind kind : kinds) {
+        if (i > 0) kindWords += i + 1 == kinds.size() ? " or " : ", ";
+        kindWords += itemKindName(kind);
+        ++i;
+    }
     // Only names that would do are offered: a typo of a bomb's name is no help where a cannon is wanted.
     std::vector<std::string_view> candidates;
     for (const ItemDesc& item : level.items)

@@ -15,7 +15,7 @@
 namespace rube::game {
 
 /// The kinds of item, in the order their names are listed in messages.
-enum class ItemKind : std::uint8_t { heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switchItem };
+enum class ItemKind : std::uint8_t { heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switchItem, magnet, fan };
 
 /// How a bomb goes off.
 enum class Trigger : std::uint8_t { timer, impact, switchHit };
@@ -26,18 +26,20 @@ struct ItemDesc {
     std::string name;            ///< unique among the level's names; may be empty for balls and planks
     ItemKind kind = ItemKind::heavy;
     Vec2 position;               ///< centre; a bucket's is the middle of its floor
-    double angle = 0.0;          ///< planks and ramps: tilt; cannons: aim (radians, counter-clockwise from +x)
-    double size = 0.0;           ///< radius of balls, bumpers, targets, switches, bombs; length of planks; width of buckets
+    double angle = 0.0;          ///< planks and ramps: tilt; cannons: aim; fans: the way they blow (radians, counter-clockwise from +x)
+    double size = 0.0;           ///< radius of balls, bumpers, targets, switches, bombs, magnets; length of planks; width of buckets and fans
     double height = 0.0;         ///< bucket walls, m
     Vec2 velocity;               ///< balls: initial velocity, m/s
-    double speed = 0.0;          ///< cannon: muzzle speed, m/s
+    double speed = 0.0;          ///< cannon: muzzle speed; fan: air speed, m/s
     ItemKind ammo = ItemKind::heavy; ///< cannon: the ball kind it shoots
     std::optional<double> fireAt;    ///< cannon: fires by itself at this time, s
     double blastRadius = 0.0;    ///< bomb: bodies whose centre is closer are pushed, m
-    double strength = 0.0;       ///< bomb: impulse at the centre, N s
+    double strength = 0.0;       ///< bomb: impulse at the centre, N s; magnet: pull at 1 m, N m^2
+    double reach = 0.0;          ///< magnet: no pull this far or farther; fan: length of its air column, m
+    bool on = true;              ///< magnet, fan: working from the start (a switch flips it)
     Trigger trigger = Trigger::impact; ///< bomb: what sets it off
     double fuse = 0.0;           ///< bomb with a timer: seconds from the start
-    std::string triggers;        ///< switch: the name of the cannon or bomb it sets off
+    std::string triggers;        ///< switch: the name of the cannon or bomb it sets off, or the fan or magnet it flips
     int path = -1;               ///< target: index of the [[path]] it follows, or -1 (still)
     SourcePlace place;           ///< where the file wrote it, for messages about it
 };
@@ -81,7 +83,8 @@ std::string itemReferenceError(const LevelDesc& level, std::string_view key, std
 /// Every kind, in the order of the enum.
 inline constexpr ItemKind kAllItemKinds[] = {ItemKind::heavy, ItemKind::bouncy, ItemKind::steel, ItemKind::balloon,
                                              ItemKind::plank, ItemKind::ramp,   ItemKind::bumper, ItemKind::cannon,
-                                             ItemKind::bomb,  ItemKind::target, ItemKind::bucket, ItemKind::switchItem};
+                                             ItemKind::bomb,  ItemKind::target, ItemKind::bucket, ItemKind::switchItem,
+                                             ItemKind::magnet, ItemKind::fan};
 /// True for the kinds that are one dynamic ball.
 bool isBall(ItemKind kind);
 /// True for the kinds a player may place from the inventory.
@@ -90,10 +93,13 @@ bool isPlaceable(ItemKind kind);
 ItemDesc defaultItem(ItemKind kind, Vec2 position);
 
 /// The physics bodies one item adds: nothing for a cannon, one circle for balls, bumpers, bombs,
-/// targets and switches, one segment for planks and ramps, three segments for a bucket.
+/// targets, switches and magnets, one segment for planks, ramps and a fan's housing, three segments
+/// for a bucket; and the field of a magnet or a fan.
 struct ItemBodies {
     std::vector<CircleDef> circles;   ///< in order
     std::vector<SegmentDef> segments; ///< in order
+    std::optional<Magnet> magnet;     ///< a magnet's pull
+    std::optional<Wind> wind;         ///< a fan's air column
 };
 /// The bodies of `item`.
 ItemBodies itemBodies(const ItemDesc& item);

@@ -16,6 +16,8 @@ constexpr std::string_view kBombKeys[] = {"kind", "name", "position", "radius", 
 constexpr std::string_view kTargetKeys[] = {"kind", "name", "position", "radius", "path"};
 constexpr std::string_view kBucketKeys[] = {"kind", "name", "position", "width", "height"};
 constexpr std::string_view kSwitchKeys[] = {"kind", "name", "position", "radius", "triggers"};
+constexpr std::string_view kMagnetKeys[] = {"kind", "name", "position", "radius", "strength", "reach", "on"};
+constexpr std::string_view kFanKeys[] = {"kind", "name", "position", "angle", "width", "speed", "reach", "on"};
 constexpr std::string_view kZoneKeys[] = {"min", "max"};
 constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "time_limit"};
 constexpr std::string_view kTriggerNames[] = {"timer", "impact", "switch"};
@@ -35,6 +37,8 @@ std::span<const std::string_view> keysOf(ItemKind kind) {
     case ItemKind::target: return kTargetKeys;
     case ItemKind::bucket: return kBucketKeys;
     case ItemKind::switchItem: return kSwitchKeys;
+    case ItemKind::magnet: return kMagnetKeys;
+    case ItemKind::fan: return kFanKeys;
     default: return kBallKeys;
     }
 }
@@ -108,6 +112,19 @@ void readKindFields(TableReader& table, ItemDesc& item, SceneReading& reading) {
     case ItemKind::switchItem:
         if (const auto r = table.number("radius", kSizeRange)) item.size = *r;
         item.triggers = table.string("triggers", Need::required).value_or("");
+        break;
+    case ItemKind::magnet:
+        if (const auto r = table.number("radius", kSizeRange)) item.size = *r;
+        if (const auto s = table.number("strength", NumberRange{0.0, 10000.0, true})) item.strength = *s;
+        if (const auto r = table.number("reach", kSizeRange)) item.reach = *r;
+        if (const auto on = table.boolean("on")) item.on = *on;
+        break;
+    case ItemKind::fan:
+        if (const auto a = table.number("angle", NumberRange{-360.0, 360.0})) item.angle = *a * std::numbers::pi / 180.0;
+        if (const auto w = table.number("width", kSizeRange)) item.size = *w;
+        if (const auto s = table.number("speed", NumberRange{0.0, 100.0, true})) item.speed = *s;
+        if (const auto r = table.number("reach", kSizeRange)) item.reach = *r;
+        if (const auto on = table.boolean("on")) item.on = *on;
         break;
     default: // balls and bumpers
         if (const auto r = table.number("radius", kSizeRange)) item.size = *r;
@@ -227,7 +244,7 @@ void readLevel(TableReader& root, SceneReading& reading) {
         if (target.empty()) continue;
         const toml::node* node = table->get("triggers");
         checkReference(reading.diag, node ? placeOf(node->source()) : placeOf(table->source()), "triggers", target,
-                       {ItemKind::cannon, ItemKind::bomb}, reading.scene.level);
+                       {ItemKind::cannon, ItemKind::bomb, ItemKind::fan, ItemKind::magnet}, reading.scene.level);
     }
 }
 

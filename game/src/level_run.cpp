@@ -45,6 +45,15 @@ void LevelRun::addItem(const ItemDesc& item) {
         const int index = world_.addSegment(s);
         if (state.firstSegment < 0) state.firstSegment = index;
     }
+    Fields& fields = world_.fields();
+    if (bodies.magnet) {
+        state.field = static_cast<int>(fields.magnets.size());
+        fields.magnets.push_back(*bodies.magnet);
+    }
+    if (bodies.wind) {
+        state.field = static_cast<int>(fields.winds.size());
+        fields.winds.push_back(*bodies.wind);
+    }
     items_.push_back(item);
     states_.push_back(state);
 }
@@ -149,11 +158,16 @@ void LevelRun::detonate(int bomb) {
     events_.push_back({EventKind::explosion, frame(), world_.time(), item.name, item.position, static_cast<int>(pushed.size())});
 }
 
-void LevelRun::toggle(int switchItem) {
-    const int target = find(items_[static_cast<std::size_t>(switchItem)].triggers);
+void LevelRun::toggle(int item) {
+    const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
+    const int target = desc.kind == ItemKind::switchItem ? find(desc.triggers) : item;
     if (target < 0) return;
-    if (items_[static_cast<std::size_t>(target)].kind == ItemKind::cannon) fire(target);
-    else if (items_[static_cast<std::size_t>(target)].kind == ItemKind::bomb) detonate(target);
+    const ItemKind kind = items_[static_cast<std::size_t>(target)].kind;
+    const int field = states_[static_cast<std::size_t>(target)].field;
+    if (kind == ItemKind::cannon) fire(target);
+    else if (kind == ItemKind::bomb) detonate(target);
+    else if (kind == ItemKind::magnet) world_.fields().magnets[static_cast<std::size_t>(field)].on ^= true;
+    else if (kind == ItemKind::fan) world_.fields().winds[static_cast<std::size_t>(field)].on ^= true;
 }
 
 void LevelRun::markHit(int item, Vec2 point) {

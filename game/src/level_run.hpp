@@ -36,6 +36,7 @@ struct ItemState {
     bool fired = false;         ///< cannons: have shot
     std::optional<double> timedShot; ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
+    int field = -1;             ///< magnets and fans: index of their Magnet or Wind in the World's fields
 };
 
 /// A level in play. Placements must have passed checkPlacements().
@@ -88,8 +89,9 @@ public:
     std::string fireWhen(int cannon, int target);
     /// Sets a bomb off now.
     void detonate(int bomb);
-    /// Flips a switch as if a ball had hit it: the item it names goes off.
-    void toggle(int switchItem);
+    /// Flips a switch as if a ball had hit it (the cannon or bomb it names goes off, the fan or magnet it
+    /// names turns on or off), or turns a fan or magnet itself on or off.
+    void toggle(int item);
 
 private:
     void addItem(const ItemDesc& item);

@@ -4,6 +4,7 @@
 
 #include "rube/render/palette.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,6 +12,7 @@ namespace rube::game {
 
 namespace {
 
+using render::Color;
 using render::Palette;
 using render::Point;
 using render::Style;
@@ -24,11 +26,29 @@ constexpr double kRingSeconds = 0.5;  // an explosion's ring grows to the blast 
 constexpr double kBarrelLength = 0.6; // m
 constexpr double kBarrelHalfWidth = 0.1;
 constexpr double kArrowSeconds = 0.15; // a projectile's arrow shows where it will be this much later
+constexpr double kWindSpacing = 0.8;  // m between a fan's arrows, along and across its column
+constexpr double kWindArrow = 0.35;   // m: each arrow's length
 constexpr int kHudMargin = 8;
 constexpr int kHudScale = 2;
 constexpr int kHudLineHeight = 18;    // pixels between the HUD's two lines
 
 Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+
+// A fan's air as rows of arrows drifting along the column at the air's speed, so a still frame
+// shows where it blows and a sequence shows that it moves. The drift is a function of world time only.
+void drawWind(const Wind& wind, double time, render::DrawList& list) {
+    const Color color = render::Palette::greybox()["wind"];
+    const Vec2 across = wind.direction.perpendicular();
+    const int rows = std::max(1, static_cast<int>(wind.width / kWindSpacing));
+    const double drift = std::fmod(time * wind.speed, kWindSpacing);
+    for (int row = 0; row < rows; ++row) {
+        const double offset = (row + 0.5) * wind.width / rows - 0.5 * wind.width;
+        for (double along = drift; along + kWindArrow <= wind.length; along += kWindSpacing) {
+            const Vec2 tail = wind.origin + across * offset + wind.direction * along;
+            list.arrow(pt(tail), pt(tail + wind.direction * kWindArrow), 2.0f, color);
+        }
+    }
+}
 
 Style style(const char* fill, const char* outline, float width = kOutline) {
     const Palette& p = Palette::greybox();
@@ -120,6 +140,22 @@ void LevelView::drawItems(const LevelRun& run, render::DrawList& list) const {
         case ItemKind::bumper:
             list.circle(pt(at), r, style("box", "arrow", 3.0f));
             break;
+        case ItemKind::magnet: {
+            // Red when pulling, grey when switched off; the faint ring is how far it reaches.
+            const bool on = world.fields().magnets[static_cast<std::size_t>(state.field)].on;
+            if (on && std::isfinite(item.reach)) list.ring(pt(at), static_cast<float>(item.reach), 1.5f, palette["magnet"].withAlpha(0x50));
+            list.circle(pt(at), r, style(on ? "magnet" : "box", "ball_outline"));
+            list.box(pt(at - Vec2{0.0, 0.5 * item.size}), {0.6f * r, 0.2f * r}, 0.0f, style("ball", "ball_outline"));
+            break;
+        }
+        case ItemKind::fan: {
+            const Wind& wind = world.fields().winds[static_cast<std::size_t>(state.field)];
+            // The motor sits behind the housing (drawn with the segments), on the side the air comes from.
+            const Vec2 back = item.position - wind.direction * 0.2;
+            list.box(pt(back), {0.2f, static_cast<float>(0.25 * item.size)}, static_cast<float>(item.angle), style(wind.on ? "box" : "ground", "box_outline"));
+            if (wind.on) drawWind(wind, world.time(), list);
+            break;
+        }
         case ItemKind::bucket: {
             const bool isGoal = goal && goal->kind == GoalKind::ballInBucket && goal->item == item.name;
             const double h = 0.5 * item.size;

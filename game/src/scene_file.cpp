@@ -13,7 +13,9 @@ constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view",
 // The level's tables: accepted everywhere, but not offered in a physics scene's key list.
 constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
-                                           "substeps",  "max_events_per_step", "resting_speed", "duration"};
+                                           "substeps",  "max_events_per_step", "resting_speed", "duration",
+                                           "air_drag"};
+constexpr std::string_view kAirDragKeys[] = {"linear", "quadratic"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
 constexpr std::string_view kViewKeys[] = {"min", "max"};
 constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
@@ -21,7 +23,7 @@ constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
 // A world key written at the top level is a common slip; say where it goes instead of guessing a typo.
 constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},  {"time_step", "[world]"},     {"method", "[world]"},
                                  {"bounds", "[world]"},   {"substeps", "[world]"},      {"duration", "[world]"},
-                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}};
+                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}, {"air_drag", "[world]"}};
 
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
@@ -54,6 +56,17 @@ void readView(TableReader& root, SceneDesc& scene) {
     scene.view = readBox(view, "view");
 }
 
+// Drag of still air: F = -2r (linear v + quadratic |v| v) on every dynamic ball (see fields.hpp).
+void readAirDrag(TableReader& world, SceneDesc& scene) {
+    const toml::table* table = world.table("air_drag", "{ linear = N s/m, quadratic = N s^2/m^2 }");
+    if (!table) return;
+    TableReader drag(*table, "in world.air_drag", kAirDragKeys, world.diagnostics());
+    // Past 1000 a ball stops in a fraction of a step: a unit slip, not a thick fluid.
+    const NumberRange range{0.0, 1000.0};
+    if (const auto k = drag.number("linear", range)) scene.world.airDrag.linear = *k;
+    if (const auto k = drag.number("quadratic", range)) scene.world.airDrag.quadratic = *k;
+}
+
 void readWorld(TableReader& root, SceneDesc& scene) {
     const toml::table* table = root.table("world", "[world]");
     if (!table) return;
@@ -65,6 +78,7 @@ void readWorld(TableReader& root, SceneDesc& scene) {
     std::transform(std::begin(kAllMethods), std::end(kAllMethods), names, methodName);
     if (const auto m = world.choice("method", names)) def.method = kAllMethods[*m];
     readBounds(world, scene);
+    readAirDrag(world, scene);
     if (const auto n = world.integer("substeps", 1, 1000)) def.substeps = static_cast<int>(*n);
     if (const auto n = world.integer("max_events_per_step", 1, 10'000'000)) def.maxEventsPerStep = static_cast<int>(*n);
     if (const auto v = world.number("resting_speed", NumberRange::nonNegative())) def.restingSpeed = *v;

@@ -109,7 +109,7 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     }
     case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
     case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
-    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem}); break;
+    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem, ItemKind::fan, ItemKind::magnet}); break;
     case ActionKind::fireWhen:
         // The cannon keeps its aim; only the moment of firing is worked out, when the action is taken.
         checkItem(action, "item", a.item, level, {ItemKind::cannon});

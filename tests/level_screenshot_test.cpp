@@ -72,3 +72,5 @@ TEST_CASE("newton: first and goal frames", "[screenshot][level]") { checkLevel("
 TEST_CASE("bucket: first and goal frames", "[screenshot][level]") { checkLevel("bucket"); }
 TEST_CASE("trampoline: first and goal frames", "[screenshot][level]") { checkLevel("trampoline"); }
 TEST_CASE("balloon: first and goal frames", "[screenshot][level]") { checkLevel("balloon"); }
+TEST_CASE("magnet: first and goal frames", "[screenshot][level]") { checkLevel("magnet"); }
+TEST_CASE("fan: first and goal frames", "[screenshot][level]") { checkLevel("fan"); }

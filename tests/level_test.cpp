@@ -15,8 +15,8 @@ using namespace rube::game;
 
 namespace {
 
-const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction",
-                               "newton", "bucket",     "trampoline",    "balloon"};
+const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
+                               "bucket", "trampoline", "balloon",       "magnet",         "fan"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -194,6 +194,48 @@ TEST_CASE("trampoline: the heavy ball dropped where the bouncy one goes does not
     LevelRun run(level, heavy);
     for (int i = 0; i < 800; ++i) run.step();
     CHECK_FALSE(run.goalFrame());
+}
+
+TEST_CASE("magnet: it pulls steel only; the same ball made of rubber slides on under the bell", "[level][fields]") {
+    SceneDesc level = loadLevel("magnet");
+    const std::vector<Placement> magnet{{ItemKind::magnet, {3.6, 1.2}, 0.0, "", {}}};
+    REQUIRE_FALSE(checkPlacements(level, magnet));
+    const auto reached = [&](const SceneDesc& scene) {
+        LevelRun run(scene, magnet);
+        for (int i = 0; i < 1000; ++i) run.step();
+        return run.goalFrame().has_value();
+    };
+    CHECK(reached(level));
+    level.level.items.front().kind = ItemKind::bouncy; // same start, not magnetic
+    CHECK_FALSE(reached(level));
+}
+
+TEST_CASE("fan: a toggle turns it off and on again", "[level][fields]") {
+    const SceneDesc level = loadLevel("fan");
+    const std::vector<Placement> fan{{ItemKind::fan, {-3.0, 0.6}, 74.0 * std::numbers::pi / 180.0, "", {}}};
+    REQUIRE_FALSE(checkPlacements(level, fan));
+    const auto play = [&](int toggles) {
+        LevelRun run(level, fan);
+        const int item = static_cast<int>(run.items().size()) - 1;
+        REQUIRE(run.items()[static_cast<std::size_t>(item)].kind == ItemKind::fan);
+        for (int i = 0; i < toggles; ++i) run.toggle(item);
+        for (int i = 0; i < 800; ++i) run.step();
+        return run;
+    };
+    const LevelRun off = play(1);
+    CHECK_FALSE(off.goalFrame());
+    CHECK(off.world().circles()[0].position.x < 0.0); // it never crossed the wall
+    CHECK(play(2).goalFrame());
+}
+
+TEST_CASE("fan: the heavy ball dropped in the same air is not lifted over the wall", "[level][fields]") {
+    SceneDesc level = loadLevel("fan");
+    const std::vector<Placement> fan{{ItemKind::fan, {-3.0, 0.6}, 74.0 * std::numbers::pi / 180.0, "", {}}};
+    level.level.items.front().kind = ItemKind::heavy;
+    LevelRun run(level, fan);
+    for (int i = 0; i < 1200; ++i) run.step();
+    CHECK_FALSE(run.goalFrame());
+    CHECK(run.world().circles()[0].position.x < 0.0); // still behind the wall
 }
 
 TEST_CASE("fire-when times a fixed-angle shot so that it hits a moving target", "[level][aim]") {

@@ -35,7 +35,7 @@ KindDefaults defaultsOf(ItemKind kind) {
     case ItemKind::bucket: return {1.2, 0.0, 0.1};
     case ItemKind::switchItem: return {0.2, 0.0, 0.5};
     case ItemKind::magnet: return {0.25, 0.0, 0.3};
-    case ItemKind::fan: return {1.0, 0.0, 0.3};
+    case ItemKind::fan: return {1.2, 0.0, 0.3};
     }
     return {0.3, 1.0, 0.5};
 }
@@ -44,12 +44,12 @@ KindDefaults defaultsOf(ItemKind kind) {
 constexpr double kBoardRadius = 0.05;
 // A bucket's walls are this tall unless the level says otherwise.
 constexpr double kBucketHeight = 0.8;
-// A magnet's default pull at 1 m, N m^2: holds a 4 kg steel ball against gravity from about 0.7 m.
-constexpr double kMagnetStrength = 20.0;
+// A magnet's default pull at 1 m, N m^2: holds a 4 kg steel ball against gravity from about 1.4 m.
+constexpr double kMagnetStrength = 80.0;
 // A fan's air: this fast, this far, and this much drag per metre of a ball's width.
-constexpr double kFanSpeed = 6.0;
-constexpr double kFanReach = 4.0;
-constexpr double kFanDrag = 2.0;
+constexpr double kFanSpeed = 10.0;
+constexpr double kFanReach = 5.0;
+constexpr double kFanDrag = 3.0;
 constexpr double kMagnetReach = 3.0;
 
 // A fan's housing: a board across its face, `size` wide, turned to blow along its angle.

@@ -39,7 +39,7 @@ Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 void drawWind(const Wind& wind, double time, render::DrawList& list) {
     const Color color = render::Palette::greybox()["wind"];
     const Vec2 across = wind.direction.perpendicular();
-    const int rows = std::max(1, static_cast<int>(wind.width / kWindSpacing));
+    const int rows = std::max(1, static_cast<int>(wind.width / (0.6 * kWindSpacing)));
     const double drift = std::fmod(time * wind.speed, kWindSpacing);
     for (int row = 0; row < rows; ++row) {
         const double offset = (row + 0.5) * wind.width / rows - 0.5 * wind.width;

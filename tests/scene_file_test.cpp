@@ -47,7 +47,7 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
     const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "newtons-cradle",
-                                            "pile", "pool-break", "projectile", "slope-rest"};
+                                            "pile", "pool-break", "projectile", "rolling", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;
@@ -171,8 +171,8 @@ TEST_CASE("an unknown key is an error, with the closest known key", "[errors]") 
     CHECK(errors[1] == "s.toml:5:1: unknown key 'raduis' in [[circle]] (did you mean 'radius'?)");
     CHECK(errorOf(ballWith("radius = 1\n  Mass = 2")) == "s.toml:6:3: unknown key 'Mass' in [[circle]] (did you mean 'mass'?)");
     CHECK(errorOf(ballWith("radius = 1\ncolour = 2")) ==
-          "s.toml:6:1: unknown key 'colour' in [[circle]] (known keys: position, velocity, radius, mass, bounciness, "
-          "friction, motion, path)");
+          "s.toml:6:1: unknown key 'colour' in [[circle]] (known keys: position, velocity, angular_velocity, inertia, "
+          "radius, mass, bounciness, friction, motion, path)");
     CHECK(errorOf("name = \"x\"\n[world]\ntimestep = 0.1\n") == "s.toml:3:1: unknown key 'timestep' in [world] (did you mean 'time_step'?)");
     CHECK(errorOf("name = \"x\"\n[[circel]]\n") == "s.toml:2:3: unknown key 'circel' at the top level (did you mean 'circle'?)");
     CHECK(errorOf("name = \"x\"\ngravity = [0, -1]\n") == "s.toml:2:1: unknown key 'gravity' at the top level (it belongs in [world])");

@@ -41,6 +41,7 @@ constexpr Golden kGoldens[] = {
     {"pile", 45, false, false},          // t = 0.75 s: the balls landing on the pile
     {"pool-break", 20, true, true},      // t = 0.33 s: the break
     {"projectile", 90, true, false},     // t = 1.5 s: past the top of the parabola
+    {"rolling", 90, true, false},        // t = 1.5 s: the slider ahead, the disc, the ring behind; spokes turned
     {"slope-rest", 60, true, true},      // t = 1 s: sliding, pressed onto the slope
 };
 
@@ -104,4 +105,5 @@ TEST_CASE("newtons-cradle matches its golden frames", "[screenshot][scene]") { c
 TEST_CASE("pile matches its golden frames", "[screenshot][scene]") { checkGoldens("pile"); }
 TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { checkGoldens("pool-break"); }
 TEST_CASE("projectile matches its golden frames", "[screenshot][scene]") { checkGoldens("projectile"); }
+TEST_CASE("rolling matches its golden frames", "[screenshot][scene]") { checkGoldens("rolling"); }
 TEST_CASE("slope-rest matches its golden frames", "[screenshot][scene]") { checkGoldens("slope-rest"); }

@@ -7,9 +7,10 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kCircleKeys[] = {"position", "velocity", "radius", "mass", "bounciness", "friction", "motion", "path"};
-constexpr std::string_view kGridKeys[] = {"origin", "columns", "rows", "spacing", "stagger", "velocity", "radius",
-                                          "mass", "bounciness", "friction", "motion", "path"};
+constexpr std::string_view kCircleKeys[] = {"position", "velocity", "angular_velocity", "inertia", "radius", "mass",
+                                            "bounciness", "friction", "motion", "path"};
+constexpr std::string_view kGridKeys[] = {"origin", "columns", "rows", "spacing", "stagger", "velocity", "angular_velocity",
+                                          "inertia", "radius", "mass", "bounciness", "friction", "motion", "path"};
 constexpr std::string_view kSegmentKeys[] = {"a", "b", "radius", "bounciness", "friction", "path"};
 // A name is how goals and scripts refer to a body; it is not offered in a physics scene's key lists.
 constexpr std::string_view kNameKey[] = {"name"};
@@ -35,6 +36,9 @@ CircleDef readCircleFields(TableReader& table, SceneReading& reading) {
     if (const auto v = table.vec2("velocity")) def.velocity = *v;
     if (const auto r = table.number("radius", NumberRange::positive(), Need::required)) def.radius = *r;
     if (const auto m = table.number("mass", NumberRange::positive())) def.mass = *m;
+    if (const auto w = table.number("angular_velocity")) def.angularVelocity = *w;
+    // I = k m r^2: 1/2 a solid disc, 1 a thin ring; more than a ring would need mass outside the rim.
+    if (const auto k = table.number("inertia", NumberRange{0.0, 1.0, true})) def.inertiaFactor = *k;
     def.material = readMaterial(table);
     const auto motion = table.choice("motion", kMotionNames);
     const auto path = readPathReference(table, reading);

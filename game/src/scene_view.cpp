@@ -93,8 +93,8 @@ void SceneView::drawCircles(const World& world, render::DrawList& list) const {
         if (radius * scale < kSpokeMinRadius) {
             list.circle(toPoint(c.position), radius, styleFor(c.motion, kSmallOutlineWidth));
         } else {
-            // Bodies do not rotate yet: the spoke stays at angle 0, ready for when they do.
-            list.circleWithSpoke(toPoint(c.position), radius, 0.0f, styleFor(c.motion, kOutlineWidth));
+            // The spoke turns with the body, so rolling reads differently from sliding.
+            list.circleWithSpoke(toPoint(c.position), radius, static_cast<float>(c.angle), styleFor(c.motion, kOutlineWidth));
         }
     }
 }

@@ -45,9 +45,8 @@ void TraceWriter::writeState(const World& world) {
     for (std::size_t i = 0; i < circles.size(); ++i) {
         const Circle& c = circles[i];
         if (c.motion != Motion::dynamic) continue;
-        // angle and omega stay 0 until bodies rotate; the columns are there so traces keep one shape.
-        std::fprintf(file_, "%lld,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,0,0,%.17g\n", step, world.time(), i,
-                     c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.radius);
+        std::fprintf(file_, "%lld,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", step, world.time(), i,
+                     c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.angle, c.angularVelocity, c.radius);
         ++rows_;
     }
 }

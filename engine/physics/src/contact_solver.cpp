@@ -1,6 +1,8 @@
 // The soft-step contact solver's stages: warm start, soft solve, relax, restitution.
 #include "contact_solver.hpp"
 
+#include "solver_friction.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -31,17 +33,36 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
     return Softness{omega / a1, a2 * a3, a3};
 }
 
-void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies) {
-    for (const ContactConstraint& c : contacts) {
+namespace {
+
+template <bool Friction>
+void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies, const FrictionState* friction) {
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const ContactConstraint& c = contacts[k];
         const Vec2 p = c.normal * c.impulse;
         bodies[c.a].velocity += p * c.invMassA;
         bodies[c.b].velocity -= p * c.invMassB;
+        if constexpr (Friction) {
+            const FrictionTerms& f = friction->terms[k];
+            if (f.friction > 0.0) applyFriction(c, f, f.impulse, bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
+        }
     }
 }
 
-void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
-                   double maxPushSpeed) {
+} // namespace
+
+void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies,
+                       const FrictionState* friction) {
+    if (friction) warmStartSweep<true>(contacts, bodies, friction);
+    else warmStartSweep<false>(contacts, bodies, nullptr);
+}
+
+namespace {
+
+/// The soft sweep, with or without friction: one template so the frictionless loop carries no test.
+template <bool Friction>
+void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
+                const Softness (&softness)[2], double h, int substep, double maxPushSpeed, const FrictionState* friction) {
     const double invH = 1.0 / h;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         ContactConstraint& c = contacts[k];
@@ -67,7 +88,20 @@ void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecor
         b.velocity -= p * c.invMassB;
         // Starting to push from zero: the cold record is only touched on this rare transition.
         if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
+        if constexpr (Friction) {
+            FrictionTerms& f = friction->terms[k];
+            if (f.friction > 0.0) solveFriction(c, f, a, b, friction->omega[c.a], friction->omega[c.b]);
+        }
     }
+}
+
+} // namespace
+
+void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
+                   double maxPushSpeed, const FrictionState* friction) {
+    if (friction) solveSweep<true>(contacts, records, bodies, softness, h, substep, maxPushSpeed, friction);
+    else solveSweep<false>(contacts, records, bodies, softness, h, substep, maxPushSpeed, nullptr);
 }
 
 namespace {

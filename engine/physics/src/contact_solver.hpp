@@ -53,16 +53,21 @@ struct ContactRecord {
     int firstTouch = -1;        ///< substep in which a contact that started at rest first pushed, or -1
 };
 
-/// Applies last substep's impulses again as the starting guess: v += M^-1 n lambda (warm starting).
-void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies);
+struct FrictionState;
+
+/// Applies last substep's impulses again as the starting guess: v += M^-1 n lambda (warm starting),
+/// and the friction impulses too when `friction` is given.
+void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies,
+                       const FrictionState* friction = nullptr);
 
 /// One Gauss-Seidel sweep with soft position feedback: overlap is pushed out softly, speculative
 /// contacts (gap s > 0) only forbid closing more than the gap within this substep, vn >= -s / h.
 /// softness[0] applies between two dynamic circles, softness[1] against infinite mass. Marks contacts
 /// that start pushing for the first time this step with `substep` and their approach speed.
+/// With `friction`, each contact's Coulomb friction is solved right after its normal impulse.
 void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
                    std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
-                   double maxPushSpeed);
+                   double maxPushSpeed, const FrictionState* friction = nullptr);
 
 /// One rigid Gauss-Seidel sweep without position feedback (relax): removes the push-out velocity
 /// the soft solve added, so overlap is corrected in position without gaining energy.

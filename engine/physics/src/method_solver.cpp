@@ -4,6 +4,7 @@
 #include "broadphase_grid.hpp"
 #include "contact_solver.hpp"
 #include "solver_contacts.hpp"
+#include "solver_friction.hpp"
 #include "solver_sweep.hpp"
 #include "step_method.hpp"
 
@@ -62,12 +63,14 @@ public:
         solve(ctx, dt);
         finish(ctx, dt);
     }
+    bool integratesRotation() const override { return true; }
 
 private:
     void prepareBodies(const StepContext& ctx, double dt);
     void findContacts(const StepContext& ctx, double dt);
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
+    void findFriction(const StepContext& ctx);
 
     int circleCount_ = 0;
     int segmentCount_ = 0;
@@ -86,6 +89,13 @@ private:
     std::vector<ContactConstraint> contacts_;
     std::vector<ContactRecord> records_;
     std::vector<double> gaps_; // per contact: its gap during the current substep's relax passes
+    // Rotation and friction, touched only in steps where some circle spins or some pair has friction.
+    bool anyRotation_ = false;
+    std::vector<FrictionTerms> frictions_; // parallel to contacts_ in steps with rotation
+    std::vector<double> omega_;           // per solver body: angular velocity (segments stay 0)
+    std::vector<int> rotating_;           // circles that turn this step
+    std::vector<double> turn_;            // per rotating circle: angle turned this step
+    std::vector<std::uint8_t> marks_;     // scratch: circle already listed as rotating
     ContactOrderScratch orderScratch_;
     BroadphaseGrid grid_;
     ContactCache cache_;
@@ -109,6 +119,7 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
     // Over a step a body moves at most |v| dt + |g| dt^2 (its speed grows by at most |g| dt).
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     fastStep_ = false;
+    anyRotation_ = false;
     for (int i = 0; i < circleCount_; ++i) {
         const Circle& c = ctx.circles[i];
         const bool dynamic = c.motion == Motion::dynamic && c.inverseMass > 0.0;
@@ -117,6 +128,9 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
         bodies_[i] = {v, {}};
         inverseMass_[i] = dynamic ? c.inverseMass : 0.0;
         isDynamic_[i] = dynamic ? 1 : 0;
+        // Model no more than the scene needs: rotation only once a circle can turn (it spins, or it
+        // could meet friction); otherwise no angular state is touched at all.
+        if (dynamic && c.inverseInertia > 0.0 && (c.material.friction > 0.0 || c.angularVelocity != 0.0)) anyRotation_ = true;
         const double travel = v.length() * dt;
         if (dynamic && travel > kFastTravelPerRadius * c.radius) fastStep_ = true;
         double margin = kSpeculativePerRadius * c.radius + travel;
@@ -190,6 +204,37 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
     buildContacts(pairs_, ctx.circles, ctx.segments, margins_, inverseMass_, cache_, contacts_, records_);
     const Vec2 up = ctx.def.gravity.lengthSquared() > 0.0 ? -ctx.def.gravity.normalized() : Vec2{0.0, 1.0};
     orderContacts(contacts_, records_, start_, up, grid_.cellSize(), orderScratch_);
+    frictions_.clear();
+    rotating_.clear();
+    if (anyRotation_) findFriction(ctx);
+}
+
+void SolverMethod::findFriction(const StepContext& ctx) {
+    const auto& circles = ctx.circles;
+    const auto& segments = ctx.segments;
+    // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
+    buildFriction(contacts_, circles, [&](std::size_t k) {
+        const ContactConstraint& c = contacts_[k];
+        const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
+                                                : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
+        return circles[static_cast<std::size_t>(c.a)].material.friction * other;
+    }, frictions_);
+    omega_.assign(bodies_.size(), 0.0);
+    marks_.assign(ctx.circles.size(), 0);
+    const auto list = [&](int body) {
+        if (body >= circleCount_ || marks_[static_cast<std::size_t>(body)] || !isDynamic_[static_cast<std::size_t>(body)]) return;
+        marks_[static_cast<std::size_t>(body)] = 1;
+        rotating_.push_back(body);
+    };
+    for (int i = 0; i < circleCount_; ++i)
+        if (circles[static_cast<std::size_t>(i)].angularVelocity != 0.0) list(i);
+    for (std::size_t k = 0; k < frictions_.size(); ++k) {
+        if (frictions_[k].friction <= 0.0) continue;
+        list(contacts_[k].a);
+        list(contacts_[k].b);
+    }
+    for (const int i : rotating_) omega_[static_cast<std::size_t>(i)] = circles[static_cast<std::size_t>(i)].angularVelocity;
+    turn_.assign(rotating_.size(), 0.0);
 }
 
 void SolverMethod::solve(const StepContext& ctx, double dt) {
@@ -201,12 +246,17 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     const Vec2 gravityStep = ctx.def.gravity * h;
     gaps_.resize(contacts_.size());
     const int relaxIterations = fastStep_ ? kFastRelaxIterations : kRelaxIterations;
+    // Friction is solved with the soft sweep only: the relax passes restore the normal velocities
+    // the push-out added, which friction does not depend on (and a third of the cost is saved).
+    FrictionState frictionState{frictions_, omega_};
+    const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
-        warmStartContacts(contacts_, bodies_);
-        solveContacts(contacts_, records_, bodies_, softness, h, k, kMaxPushSpeed);
+        warmStartContacts(contacts_, bodies_, friction);
+        solveContacts(contacts_, records_, bodies_, softness, h, k, kMaxPushSpeed, friction);
         for (SolverBody& b : bodies_) b.displacement += b.velocity * h;
+        for (std::size_t r = 0; r < rotating_.size(); ++r) turn_[r] += omega_[static_cast<std::size_t>(rotating_[r])] * h;
         for (int r = 0; r < relaxIterations; ++r) relaxContacts(contacts_, records_, bodies_, gaps_, r == 0, h, k);
     }
     cache_.store(contacts_, circleCount_, segmentCount_);
@@ -222,6 +272,11 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
         } else if (c.motion == Motion::kinematic) {
             c.position = start_[i] + c.velocity * dt; // straight along this step's velocity
         }
+    }
+    for (std::size_t r = 0; r < rotating_.size(); ++r) {
+        Circle& c = ctx.circles[static_cast<std::size_t>(rotating_[r])];
+        c.angularVelocity = omega_[static_cast<std::size_t>(rotating_[r])];
+        c.angle += turn_[r];
     }
     const std::size_t firstImpact = ctx.impacts.size();
     // The sweep sees segments at their start, moving with their velocity over the step.

@@ -30,6 +30,8 @@ std::uint64_t stateHash(const World& world) {
         mix(h, c.position.y);
         mix(h, c.velocity.x);
         mix(h, c.velocity.y);
+        mix(h, c.angle);
+        mix(h, c.angularVelocity);
     }
     for (const Segment& s : world.segments()) {
         mix(h, s.a.x);

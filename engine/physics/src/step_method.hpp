@@ -26,6 +26,9 @@ class StepMethod {
 public:
     virtual ~StepMethod() = default;
     virtual void step(StepContext& context, double dt) = 0;
+    /// True when the method turns circles itself (friction torques); otherwise the world carries
+    /// each circle's angle on at its constant angular velocity.
+    virtual bool integratesRotation() const { return false; }
 };
 
 std::unique_ptr<StepMethod> makeDiscreteMethod();

@@ -49,6 +49,10 @@ int World::addCircle(const CircleDef& d) {
     c.motion = d.motion;
     c.path = d.motion == Motion::kinematic ? d.path : -1;
     c.magnetic = d.magnetic;
+    if (c.motion == Motion::dynamic && c.inverseMass > 0.0 && d.inertiaFactor > 0.0 && d.radius > 0.0) {
+        c.inverseInertia = c.inverseMass / (d.inertiaFactor * d.radius * d.radius); // 1 / (k m r^2)
+        c.angularVelocity = d.angularVelocity;
+    }
     if (c.path < 0 && c.motion == Motion::kinematic) c.motion = Motion::fixed;
     circles_.push_back(c);
     escaped_.push_back(0);
@@ -108,6 +112,11 @@ void World::step() {
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     StepContext context{def_, circles_, segments_, time_, resting, impacts_, stats_};
     method_->step(context, dt);
+    // Methods that do not model friction cannot change a spin; it carries the angle on (none of
+    // them pays for it unless something spins).
+    if (!method_->integratesRotation())
+        for (Circle& c : circles_)
+            if (c.angularVelocity != 0.0) c.angle += c.angularVelocity * dt;
     ++stats_.steps;
     // Integer step count times dt, not a running sum: the clock does not drift over long runs.
     time_ = static_cast<double>(stats_.steps) * dt;

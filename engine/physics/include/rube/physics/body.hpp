@@ -12,11 +12,12 @@ namespace rube {
 /// `dynamic` under gravity and impacts with finite mass.
 enum class Motion : std::uint8_t { fixed, kinematic, dynamic };
 
-/// Surface response of a body. A pair's bounciness is the product of both (walls default to 1,
-/// so a ball's own bounciness applies on a plain wall); friction is stored for the later friction model.
+/// Surface response of a body. A pair's bounciness and friction are the products of both (walls
+/// default to bounciness 1, so a ball's own applies on a plain wall, and to friction 0: a plain wall
+/// is frictionless, and so is every pair until a scene asks for friction on both sides).
 struct Material {
     double bounciness = 1.0; ///< C in v' = u - C (v - u) (lecture 3): 0 sticks, 1 is perfectly elastic
-    double friction = 0.0;   ///< Coulomb coefficient (not yet used: tangential velocity is kept)
+    double friction = 0.0;   ///< Coulomb coefficient mu: the tangential impulse is at most mu times the normal one
 };
 
 /// One key of a scripted path: the body's offset from where it was placed, at a time in seconds.
@@ -45,6 +46,9 @@ struct Circle {
     int path = -1;            ///< index of its KinematicPath, or -1
     Vec2 origin;              ///< where it was placed: the path's offsets are added to this
     bool magnetic = false;    ///< magnets pull it (steel)
+    double angle = 0.0;       ///< radians turned since it was placed (counter-clockwise)
+    double angularVelocity = 0.0; ///< omega, rad/s
+    double inverseInertia = 0.0;  ///< 1 / I about the centre; 0 for kinematic and fixed circles
 };
 
 /// A two-sided line segment from a to b with rounded line caps of `radius` at both ends.
@@ -71,6 +75,8 @@ struct CircleDef {
     Motion motion = Motion::dynamic;
     int path = -1;
     bool magnetic = false;    ///< magnets pull it (steel)
+    double angularVelocity = 0.0; ///< omega at the start, rad/s (a spinning throw)
+    double inertiaFactor = 0.5;   ///< I = inertiaFactor m r^2: 1/2 a solid disc, 1 a thin ring
 };
 
 /// What a caller fills in to add a segment; the default is a static line of zero thickness.

@@ -25,14 +25,27 @@ bool isFrameFileName(std::string_view name) {
     return digits.size() >= 5 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+namespace {
+
+// A frame's temporary file, left behind only when a run was killed while writing it:
+// "." + a frame's name + ".<pid>-<n>.part" (see writeFileAtomically).
+bool isUnfinishedFrameName(std::string_view name) {
+    if (!name.starts_with('.') || !name.ends_with(".part")) return false;
+    const std::size_t png = name.find(".png.");
+    return png != std::string_view::npos && isFrameFileName(name.substr(1, png + 4 - 1));
+}
+
+} // namespace
+
 std::int64_t removeFrames(const std::filesystem::path& folder) {
     std::int64_t removed = 0;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        if (entry.is_regular_file(error) && isFrameFileName(entry.path().filename().string()) &&
-            std::filesystem::remove(entry.path(), error)) {
-            ++removed;
-        }
+        const std::string name = entry.path().filename().string();
+        if (!entry.is_regular_file(error)) continue;
+        // A killed run's unfinished frames go too (not counted: they were never frames).
+        if (isUnfinishedFrameName(name)) std::filesystem::remove(entry.path(), error);
+        else if (isFrameFileName(name) && std::filesystem::remove(entry.path(), error)) ++removed;
     }
     return removed;
 }

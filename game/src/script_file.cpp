@@ -89,6 +89,12 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     a.kind = kind;
     a.place = action.tablePlace();
     a.frame = action.integer("frame", 0, kMaxSteps, Need::required).value_or(0);
+    // A script reads as a timeline: an action listed after a later one is almost always a slip
+    // (a frame number typed wrong), and taking it silently would play something else.
+    if (!script.actions.empty() && a.frame < script.actions.back().frame)
+        action.error(action.valuePlace("frame"), "actions must be listed in frame order: frame " + std::to_string(a.frame) +
+                                                     " comes after frame " + std::to_string(script.actions.back().frame) +
+                                                     " (line " + std::to_string(script.actions.back().place.line) + ")");
     a.item = action.string("item", Need::required).value_or("");
     if (a.item.empty()) return;
     switch (kind) {
@@ -190,7 +196,6 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
         diag.error(script.placements[refusal->index].place, refusal->message);
         return {std::nullopt, diag.sorted()};
     }
-    std::stable_sort(script.actions.begin(), script.actions.end(), [](const Action& a, const Action& b) { return a.frame < b.frame; });
     return {std::move(script), {}};
 }
 

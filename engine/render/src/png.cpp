@@ -188,7 +188,8 @@ void writeFileAtomically(const std::filesystem::path& path, const std::vector<st
     if (file == nullptr) {
         throw std::runtime_error("cannot write " + path.string() + ": " + reason(errno));
     }
-    bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+    // An empty vector's data() may be null, which fwrite must not be given even for 0 bytes.
+    bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
     int writeError = errno;
     if (std::fclose(file) != 0 && written) {
         written = false;

@@ -35,6 +35,7 @@ constexpr Expected kExpected[] = {
     {"projectile", "", 108, 0xad425ba6c5def038ull},
     {"slope-rest", "", 180, 0x29c6b15c4aad14b0ull},
     {"rolling", "", 180, 0x6c36752f98a83189ull},
+    {"float", "", 300, 0x72fe7040c1674a66ull},
     {"pool-break", "discrete", 240, 0x8cd878b4b51a0b74ull},
     {"pool-break", "turn-based", 240, 0xe626442c4809d8ddull},
     {"pool-break", "solver", 240, 0xeccc6c082bbcf7c6ull},

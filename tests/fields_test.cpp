@@ -144,3 +144,58 @@ TEST_CASE("fields: a world without fields moves exactly as before", "[fields]") 
     const double t = plain.time();
     CHECK(plain.circles()[0].position.y == Approx(2.0 * t - 0.5 * 9.81 * t * t).margin(1e-9));
 }
+
+TEST_CASE("fields: the submerged area of a circle is the circular segment below the surface", "[fields][water]") {
+    const double r = 0.5, pi = 3.141592653589793;
+    CHECK(submergedArea(r, r) == 0.0);
+    CHECK(submergedArea(r, 2.0) == 0.0);
+    CHECK(submergedArea(r, -r) == Approx(pi * r * r));
+    CHECK(submergedArea(r, 0.0) == Approx(pi * r * r / 2.0).epsilon(1e-15));
+    for (const double h : {-0.45, -0.2, 0.1, 0.3, 0.49}) {
+        CAPTURE(h);
+        // Against a midpoint-rule integral of the chord width 2 sqrt(r^2 - y^2) over the part of the
+        // disc below the surface, which lies at y = -h from the centre: y in [-r, -h].
+        const int n = 200'000;
+        double below = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double y = -r + (-h + r) * (i + 0.5) / n;
+            below += 2.0 * std::sqrt(r * r - y * y) * (-h + r) / n;
+        }
+        CHECK(submergedArea(r, h) == Approx(below).epsilon(1e-6));
+        CHECK(submergedArea(r, h) + submergedArea(r, -h) == Approx(pi * r * r).epsilon(1e-14));
+    }
+}
+
+TEST_CASE("fields: a ball of half the water's density floats with its centre at the surface", "[fields][water]") {
+    // rho A g = m g at equilibrium: A = m / rho = pi r^2 / 2, so half the ball is under water.
+    const double r = 0.5, rho = 1000.0, pi = 3.141592653589793;
+    for (const Method method : kMethods) {
+        CAPTURE(methodName(method));
+        World world = openWorld(method);
+        world.fields().waters.push_back(Water{{-10.0, -10.0}, {10.0, 0.0}, rho});
+        const int ball = addBall(world, 0.5 * rho * pi * r * r, r);
+        world.circles()[ball].position = {0.0, 1.5};
+        for (int i = 0; i < 60 * 29; ++i) world.step();
+        const double before = world.circles()[ball].position.y;
+        for (int i = 0; i < 60; ++i) world.step();
+        const Circle& c = world.circles()[ball];
+        CHECK(std::abs(c.position.y) < 0.02 * r);
+        // At rest: it moves less than a millimetre over the last second. (Its velocity after a step
+        // is not 0 but up to g dt: buoyancy acts at the step's start, gravity within the method.)
+        CHECK(std::abs(c.position.y - before) < 0.001);
+    }
+    SECTION("a quarter as dense floats higher, where a quarter of its area is under") {
+        World world = openWorld(Method::exact);
+        world.fields().waters.push_back(Water{{-10.0, -10.0}, {10.0, 0.0}, rho});
+        const int ball = addBall(world, 0.25 * rho * pi * r * r, r);
+        for (int i = 0; i < 60 * 30; ++i) world.step();
+        // Solve A(h) = pi r^2 / 4 for the height h of the centre above the surface by bisection.
+        double lo = -r, hi = r;
+        for (int i = 0; i < 100; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (submergedArea(r, mid) > pi * r * r / 4.0 ? lo : hi) = mid;
+        }
+        CHECK(world.circles()[ball].position.y == Approx(lo).margin(0.02 * r));
+        CHECK(lo > 0.1 * r); // it really floats higher than the half-density ball
+    }
+}

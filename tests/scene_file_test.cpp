@@ -46,7 +46,7 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 } // namespace
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
-    const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "newtons-cradle",
+    const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "float", "newtons-cradle",
                                             "pile", "pool-break", "projectile", "rolling", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {

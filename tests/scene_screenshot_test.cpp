@@ -37,6 +37,7 @@ constexpr Golden kGoldens[] = {
     {"ball-stack", 120, false, false},   // t = 2 s: the column should still stand
     {"bounce", 120, true, false},        // t = 2 s: on the way up after the first bounce
     {"bullet", 1, true, true},           // the step that crosses the line: the impact and the way back
+    {"float", 300, false, false},        // t = 5 s: one high, one half under, one on the bottom
     {"newtons-cradle", 61, false, true}, // just after the chain of impacts at t = 1 s
     {"pile", 45, false, false},          // t = 0.75 s: the balls landing on the pile
     {"pool-break", 20, true, true},      // t = 0.33 s: the break
@@ -101,6 +102,7 @@ TEST_CASE("every physics scene has a golden frame", "[screenshot][scene]") {
 TEST_CASE("ball-stack matches its golden frames", "[screenshot][scene]") { checkGoldens("ball-stack"); }
 TEST_CASE("bounce matches its golden frames", "[screenshot][scene]") { checkGoldens("bounce"); }
 TEST_CASE("bullet matches its golden frames", "[screenshot][scene]") { checkGoldens("bullet"); }
+TEST_CASE("float matches its golden frames", "[screenshot][scene]") { checkGoldens("float"); }
 TEST_CASE("newtons-cradle matches its golden frames", "[screenshot][scene]") { checkGoldens("newtons-cradle"); }
 TEST_CASE("pile matches its golden frames", "[screenshot][scene]") { checkGoldens("pile"); }
 TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { checkGoldens("pool-break"); }

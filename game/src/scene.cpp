@@ -24,6 +24,7 @@ World buildWorld(const SceneDesc& scene) {
     for (const NamedPath& path : scene.paths) world.addPath(path.path);
     for (const CircleDef& circle : scene.circles) world.addCircle(circle);
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
+    world.fields().waters = scene.waters;
     return world;
 }
 

@@ -31,6 +31,7 @@ struct SceneDesc {
     std::vector<SegmentDef> segments; ///< in file order
     std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
     std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
+    std::vector<Water> waters;      ///< [[water]] pools, in file order
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.

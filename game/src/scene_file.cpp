@@ -9,7 +9,8 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment"};
+constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water"};
+constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 // The level's tables: accepted everywhere, but not offered in a physics scene's key list.
 constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
@@ -65,6 +66,21 @@ void readAirDrag(TableReader& world, SceneDesc& scene) {
     const NumberRange range{0.0, 1000.0};
     if (const auto k = drag.number("linear", range)) scene.world.airDrag.linear = *k;
     if (const auto k = drag.number("quadratic", range)) scene.world.airDrag.quadratic = *k;
+}
+
+// [[water]]: a pool from min to max; its top edge is the surface.
+void readWaters(TableReader& root, SceneDesc& scene) {
+    for (const toml::table* table : root.arrayOfTables("water")) {
+        TableReader water(*table, "in [[water]]", kWaterKeys, root.diagnostics());
+        const auto box = readBox(water, "water");
+        Water pool;
+        if (const auto rho = water.number("density", NumberRange::positive())) pool.density = *rho;
+        if (const auto drag = water.number("drag", NumberRange::nonNegative())) pool.drag = *drag;
+        if (!box) continue;
+        pool.min = box->min;
+        pool.max = box->max;
+        scene.waters.push_back(pool);
+    }
 }
 
 void readWorld(TableReader& root, SceneDesc& scene) {
@@ -189,6 +205,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     scene.description = root.string("description").value_or("");
     readWorld(root, scene);
     readView(root, scene);
+    readWaters(root, scene);
     readPaths(root, reading);
     readCircles(root, reading);
     readCircleGrids(root, reading);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rube {
 
@@ -28,7 +29,31 @@ Vec2 windKick(Vec2 v, Vec2 air, double k, double dt) { return (v - air) * std::e
 // The part of [start, end) that lies within [t0, t1): how long a thruster burns during the step.
 double overlap(double start, double end, double t0, double t1) { return std::max(0.0, std::min(end, t1) - std::max(start, t0)); }
 
+// Buoyancy and water drag on one circle in one pool, as a change of velocity over dt.
+Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
+    if (c.position.x < water.min.x || c.position.x > water.max.x || c.position.y - c.radius > water.max.y ||
+        c.position.y + c.radius < water.min.y)
+        return {};
+    const double area = submergedArea(c.radius, c.position.y - water.max.y);
+    if (area <= 0.0) return {};
+    const double fullArea = std::numbers::pi * c.radius * c.radius;
+    // Archimedes: the displaced water's weight, rho A g, pushes against gravity; its line of action
+    // passes through the centre of a circle, so it turns nothing.
+    const Vec2 buoyancy = gravity * (-water.density * area * c.inverseMass * dt);
+    // Drag, exact as for the wind: dv/dt = -k v with k = 2r drag (A / pi r^2) / m.
+    const double k = 2.0 * c.radius * water.drag * (area / fullArea) * c.inverseMass;
+    return buoyancy + c.velocity * std::expm1(-k * dt);
+}
+
 } // namespace
+
+double submergedArea(double r, double height) {
+    if (height >= r) return 0.0;
+    if (height <= -r) return std::numbers::pi * r * r;
+    // The circular segment cut off below a chord at signed distance h from the centre (h > 0: the
+    // centre is above the surface): A = r^2 acos(h/r) - h sqrt(r^2 - h^2), pi r^2 / 2 at h = 0.
+    return r * r * std::acos(height / r) - height * std::sqrt(r * r - height * height);
+}
 
 Vec2 magnetForce(const Magnet& magnet, Vec2 position) {
     const Vec2 d = magnet.position - position;
@@ -52,6 +77,7 @@ void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag&
                 kick += windKick(c.velocity, wind.airVelocity(), width * wind.drag * c.inverseMass, dt);
         if (c.magnetic)
             for (const Magnet& magnet : fields.magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
+        for (const Water& water : fields.waters) kick += waterKick(c, water, gravity, dt);
         c.velocity += kick;
     }
     for (const Thruster& thruster : fields.thrusters) {

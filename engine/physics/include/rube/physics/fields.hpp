@@ -65,13 +65,29 @@ struct Thruster {
     double end = std::numeric_limits<double>::infinity(); ///< s, world time it burns out
 };
 
+/// Water: a rectangular pool whose surface is its top edge. A circle in it is pushed up by the
+/// weight of the water it displaces (Archimedes), F = rho A |g| with A the exactly submerged area
+/// (a circular segment), and slowed by drag in proportion to how much of it is under water.
+/// In 2-D a density is a mass per area: kg/m^2.
+struct Water {
+    Vec2 min;                 ///< lower-left corner of the pool, m
+    Vec2 max;                 ///< upper-right corner; max.y is the surface, m
+    double density = 1000.0;  ///< rho, kg/m^2: a ball of half this density floats half under
+    double drag = 1000.0;     ///< N s/m per metre of width, fully submerged: damps a floating 1 m ball in seconds
+};
+
+/// The area of a circle of radius `r` whose centre is `height` above a flat surface that lies
+/// below the surface: A = r^2 acos(h/r) - h sqrt(r^2 - h^2), 0 above, pi r^2 fully under.
+double submergedArea(double r, double height);
+
 /// Every field of a world except its air drag (which is part of WorldDef).
 struct Fields {
     std::vector<Wind> winds;
     std::vector<Magnet> magnets;
     std::vector<Thruster> thrusters;
-    /// True when no wind, magnet or thruster is set.
-    bool empty() const { return winds.empty() && magnets.empty() && thrusters.empty(); }
+    std::vector<Water> waters;
+    /// True when no wind, magnet, thruster or water is set.
+    bool empty() const { return winds.empty() && magnets.empty() && thrusters.empty() && waters.empty(); }
 };
 
 /// The magnet's pull on a magnetic circle at `position`, N (zero past its reach or when switched off).

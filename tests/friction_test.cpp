@@ -141,3 +141,22 @@ TEST_CASE("friction: a spin in flight is kept, and turns the angle at omega unde
         CHECK(world.circles()[ball].angle == Approx(2.0).epsilon(1e-12));
     }
 }
+
+TEST_CASE("friction: a ball set down on a conveyor is carried at a third of the belt's speed", "[friction][conveyor]") {
+    // The belt's friction impulse J brings the contact point to the belt speed u:
+    // v + omega r = u with v = J / m and omega = J r / I, so for a disc (I = m r^2 / 2) v = u / 3.
+    const double u = 3.0, r = 0.5;
+    World world = solverWorld();
+    SegmentDef belt;
+    belt.a = {-100, 0};
+    belt.b = {100, 0};
+    belt.material = {0.0, 0.8};
+    belt.surfaceSpeed = u;
+    world.addSegment(belt);
+    const int ball = addDisc(world, {0.0, r}, {}, 0.0, 0.8, r);
+    run(world, 2.0);
+    const Circle& c = world.circles()[ball];
+    CHECK(c.velocity.x == Approx(u / 3.0).epsilon(0.01));
+    CHECK(c.velocity.x + c.angularVelocity * r == Approx(u).epsilon(0.01)); // the contact point moves with the belt
+    CHECK(world.segments()[0].a == Vec2{-100, 0}); // the belt itself stays where it is
+}

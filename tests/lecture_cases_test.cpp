@@ -45,7 +45,7 @@ double distanceFromLine(Vec2 p, Vec2 a, Vec2 b) { return (p - a).dot((b - a).nor
 
 } // namespace
 
-TEST_CASE("discrete tunnels when speed x dt > 2r; exact never does", "[lecture][tunnel]") {
+TEST_CASE("discrete tunnels when speed x dt > 2r, exact never does", "[lecture][tunnel]") {
     const double r = 0.1;
     for (const double ratio : {1.01, 1.5, 3.0, 10.0}) {
         const double speed = ratio * 2.0 * r / kDt;

@@ -196,7 +196,7 @@ TEST_CASE("trampoline: the heavy ball dropped where the bouncy one goes does not
     CHECK_FALSE(run.goalFrame());
 }
 
-TEST_CASE("magnet: it pulls steel only; the same ball made of rubber slides on under the bell", "[level][fields]") {
+TEST_CASE("magnet: it pulls steel only, the same ball made of rubber slides on under the bell", "[level][fields]") {
     SceneDesc level = loadLevel("magnet");
     const std::vector<Placement> magnet{{ItemKind::magnet, {3.6, 1.2}, 0.0, "", {}}};
     REQUIRE_FALSE(checkPlacements(level, magnet));

@@ -213,7 +213,7 @@ void SolverMethod::findFriction(const StepContext& ctx) {
     const auto& circles = ctx.circles;
     const auto& segments = ctx.segments;
     // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
-    buildFriction(contacts_, circles, [&](std::size_t k) {
+    buildFriction(contacts_, circles, segments, [&](std::size_t k) {
         const ContactConstraint& c = contacts_[k];
         const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
                                                 : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;

@@ -27,6 +27,7 @@ struct FrictionTerms {
     double tangentMass = 0.0;     ///< 1 / (1/mA + 1/mB + rA^2/IA + rB^2/IB): effective mass along t
     double friction = 0.0;        ///< mu of the pair; 0 skips the contact
     double impulse = 0.0;         ///< accumulated tangential impulse this step
+    Vec2 surfaceVelocityB;        ///< a conveyor's moving surface: b's contact point moves this much faster
 };
 
 /// What the contact sweeps need for friction: the terms per contact and each solver body's omega.
@@ -37,8 +38,8 @@ struct FrictionState {
 
 /// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1).
 template <class FrictionOf>
-void buildFriction(std::span<const ContactConstraint> contacts, std::span<const Circle> circles, FrictionOf friction,
-                   std::vector<FrictionTerms>& out) {
+void buildFriction(std::span<const ContactConstraint> contacts, std::span<const Circle> circles,
+                   std::span<const Segment> segments, FrictionOf friction, std::vector<FrictionTerms>& out) {
     out.assign(contacts.size(), FrictionTerms{});
     const int circleCount = static_cast<int>(circles.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -53,6 +54,8 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
             const Circle& cb = circles[static_cast<std::size_t>(c.b)];
             f.armB = cb.radius;
             f.inverseInertiaB = cb.inverseInertia;
+        } else if (const Segment& s = segments[static_cast<std::size_t>(c.b - circleCount)]; s.surfaceSpeed != 0.0) {
+            f.surfaceVelocityB = (s.b - s.a).normalized() * s.surfaceSpeed;
         }
         const double kt = c.invMassA + c.invMassB + f.armA * f.armA * f.inverseInertiaA + f.armB * f.armB * f.inverseInertiaB;
         f.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
@@ -74,7 +77,7 @@ inline void applyFriction(const ContactConstraint& c, const FrictionTerms& f, do
 /// |lambda_t| <= mu lambda_n, using the contact's normal impulse as it stands now.
 inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, SolverBody& a, SolverBody& b, double& omegaA,
                           double& omegaB) {
-    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity) - f.armA * omegaA - f.armB * omegaB;
+    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - f.surfaceVelocityB) - f.armA * omegaA - f.armB * omegaB;
     const double limit = f.friction * c.impulse;
     const double total = std::clamp(f.impulse - f.tangentMass * vt, -limit, limit);
     const double delta = total - f.impulse;

@@ -66,6 +66,7 @@ int World::addSegment(const SegmentDef& d) {
     s.radius = d.radius;
     s.material = d.material;
     s.path = d.path;
+    s.surfaceSpeed = d.surfaceSpeed;
     segments_.push_back(s);
     return static_cast<int>(segments_.size()) - 1;
 }

@@ -62,6 +62,7 @@ struct Segment {
     Material material;
     int path = -1;
     Vec2 originA, originB;
+    double surfaceSpeed = 0.0; ///< a conveyor: its surface moves along a->b at this speed, m/s (felt through friction)
     Motion motion() const { return path >= 0 ? Motion::kinematic : Motion::fixed; }
 };
 
@@ -86,6 +87,7 @@ struct SegmentDef {
     double radius = 0.0;
     Material material;
     int path = -1;
+    double surfaceSpeed = 0.0; ///< a conveyor's belt speed along a->b, m/s
 };
 
 } // namespace rube

@@ -1,5 +1,6 @@
 // The `rube` command: parses the command line and hands over to `run` or `check`.
 #include "check_command.hpp"
+#include "play_window.hpp"
 #include "run_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -60,9 +61,25 @@ constexpr const char* kCheckFooter =
     "errors (a typo must not silently become a default) and come with the closest known key.\n"
     "Exit status: 0 when every file is ok, 2 otherwise.";
 
+constexpr const char* kPlayFooter =
+    "The window shows the level as 'rube run' draws it, with the inventory bar below.\n"
+    "Editing: drag an item from the bar into a green placement zone; it turns red, with the reason\n"
+    "  on the bar, where it may not go. Wheel or [ ] turns planks, ramps and fans by 15 degrees;\n"
+    "  drag a placed item to move it, right-click or Delete removes it (or drop it on the bar).\n"
+    "  Drag from a cannon to aim it (the predicted arc follows); the wheel over it turns 1 degree.\n"
+    "Keys: Space runs the machine, R resets to editing with placements kept, P pauses, S slow\n"
+    "  motion (a tenth of real time), D toggles trails, C clears them, Esc quits.\n"
+    "Running: click a cannon to fire it, a bomb to set it off, a switch, fan or magnet to flip it.\n"
+    "Recording: --record FILE writes the placements, the aims (frame-0 actions), the actions taken\n"
+    "  while running (at their step numbers) and, if the goal was reached, an expectation that it\n"
+    "  is reached again; 'rube run LEVEL --script FILE --out DIR' replays it off-screen, frame for\n"
+    "  frame (frame n is step n). The script records the session as it ends: after R, the edits.\n"
+    "Without a display, play says so: use 'rube run' or 'xvfb-run rube play LEVEL'.\n"
+    "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, script, --record path).";
+
 constexpr const char* kMainFooter =
     "Scene files are TOML: see levels/physics/ for examples and game/scene-format.md for every key.\n"
-    "Run 'rube run --help' or 'rube check --help' for a command's options.\n"
+    "Run 'rube run --help', 'rube play --help' or 'rube check --help' for a command's options.\n"
     "Exit status: 0 ok, 1 a run failed, 2 bad input or usage (every message is one line on stderr).";
 
 // Usage errors are one line on stderr, pointing at the help that explains the option.
@@ -126,7 +143,7 @@ std::string frameSizeError(const std::string& text) {
 
 int main(int argc, char** argv) {
     CLI::App app{"rube: a greybox physics puzzle game of the Incredible Machine kind.\n"
-                 "Runs physics scenes, renders them to PNG frames and checks scene files.",
+                 "Runs physics scenes, renders them to PNG frames, plays levels in a window and checks scene files.",
                  "rube"};
     app.footer(kMainFooter);
     app.set_version_flag("--version", "rube " RUBE_VERSION);
@@ -178,9 +195,32 @@ int main(int argc, char** argv) {
     checkCommand->footer(kCheckFooter);
     checkCommand->add_option("files", files, "Scene files (.toml) to validate")->required()->type_name("FILE");
 
+    rube::game::PlayOptions play;
+    std::string playSize = "1280x720";
+    std::int64_t quitAfter = 0;
+    CLI::App* playCommand = app.add_subcommand("play", "Play a level in a window with the mouse and keys; optionally record it as a script");
+    playCommand->footer(kPlayFooter);
+    playCommand->add_option("level", play.level, "The level file (.toml) to play")->required()->type_name("LEVEL");
+    playCommand->add_option("--script", play.script, "Start from this script: its placements and aims; its other actions play as the machine runs")->type_name("FILE");
+    playCommand->add_option("--record", play.record, "When the session ends, write it as a script that 'rube run --script' replays")
+        ->type_name("FILE");
+    CLI::Option* playSizeOption = playCommand->add_option("--size", playSize, "Level area in pixels, as rube run's frames (default 1280x720)")
+                                      ->type_name("WxH")
+                                      ->check(CLI::Validator(frameSizeError, ""));
+    playCommand->add_flag("--run", play.runAtOnce, "Start the machine at once, as if Space were pressed");
+    CLI::Option* quitAfterOption = playCommand->add_option("--quit-after", quitAfter, "Close the window N frames after the machine starts")
+                                       ->type_name("N")
+                                       ->check(countFromOne("frames"));
+    playCommand->add_option("--steps-per-frame", play.stepsPerFrame, "Take K steps per frame drawn instead of following real time")
+        ->type_name("K")
+        ->check(countFromOne("steps"));
+    bool noVsync = false;
+    playCommand->add_flag("--no-vsync", noVsync, "Draw as fast as possible instead of at the display's refresh (for measuring)");
+
     // CLI11 would call a misspelt command a missing one ("A subcommand is required").
-    if (argc > 1 && argv[1][0] != '-' && !runCommand->check_name(argv[1]) && !checkCommand->check_name(argv[1])) {
-        std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run and check (see 'rube --help')\n";
+    if (argc > 1 && argv[1][0] != '-' && !runCommand->check_name(argv[1]) && !checkCommand->check_name(argv[1]) &&
+        !playCommand->check_name(argv[1])) {
+        std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play and check (see 'rube --help')\n";
         return kBadInput;
     }
     try {
@@ -207,6 +247,12 @@ int main(int argc, char** argv) {
         run.size = *parseFrameSize(size); // the validator has accepted it
         run.progress = ::isatty(STDERR_FILENO) == 1;
         return rube::game::runScene(run, std::cout, std::cerr);
+    }
+    if (*playCommand) {
+        if (*quitAfterOption) play.quitAfter = quitAfter;
+        if (*playSizeOption) play.size = *parseFrameSize(playSize);
+        play.vsync = !noVsync;
+        return rube::game::playInWindow(play, std::cout, std::cerr);
     }
     return rube::game::checkScenes(files, std::cout, std::cerr);
 }

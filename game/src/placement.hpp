@@ -12,9 +12,11 @@ namespace rube::game {
 struct Placement {
     ItemKind kind = ItemKind::plank; ///< must be in the level's inventory
     Vec2 position;                   ///< centre
-    double angle = 0.0;              ///< radians; planks and ramps only
+    double angle = 0.0;              ///< radians; planks, ramps and fans turn
     std::string name;                ///< optional, so scripts can refer to it later
     SourcePlace place;               ///< where the script wrote it
+    double angleDegrees = 0.0;       ///< `angle` in degrees as the script wrote it, so a recorded
+                                     ///< session writes back exactly what it read
 };
 
 /// A placement that was refused: which rule, and the words of the message.

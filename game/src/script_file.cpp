@@ -24,8 +24,6 @@ constexpr std::string_view kArcNames[] = {"low", "high"};
 // The longest run a script may ask for: an hour at 60 steps a second.
 constexpr std::int64_t kMaxSteps = 216'000;
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
 // The item an action or expectation names must exist and be of the kind it acts on.
 bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level,
                std::initializer_list<ItemKind> kinds) {
@@ -60,7 +58,10 @@ void readPlacements(TableReader& root, ScriptDesc& script) {
         Placement p;
         const auto kind = place.choice("kind", placeable, Need::required);
         const auto position = place.vec2("position", Need::required);
-        if (const auto a = place.number("angle", NumberRange{-360.0, 360.0})) p.angle = radians(*a);
+        if (const auto a = place.number("angle", NumberRange{-360.0, 360.0})) {
+            p.angleDegrees = *a;
+            p.angle = scriptRadians(*a);
+        }
         p.name = place.string("name").value_or("");
         p.place = place.tablePlace();
         if (!kind || !position) continue;
@@ -100,11 +101,17 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     switch (kind) {
     case ActionKind::rotate:
         checkItem(action, "item", a.item, level, {ItemKind::cannon});
-        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0}, Need::required)) a.angle = radians(*angle);
+        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0}, Need::required)) {
+            a.angleDegrees = *angle;
+            a.angle = scriptRadians(*angle);
+        }
         break;
     case ActionKind::aim: {
         checkItem(action, "item", a.item, level, {ItemKind::cannon});
-        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0})) a.angle = radians(*angle);
+        if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0})) {
+            a.angleDegrees = *angle;
+            a.angle = scriptRadians(*angle);
+        }
         a.point = action.vec2("point");
         a.target = action.string("target").value_or("");
         if (const auto arc = action.choice("arc", kArcNames)) a.highArc = *arc == 1;
@@ -161,6 +168,8 @@ void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& scr
 }
 
 } // namespace
+
+double scriptRadians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 std::string Expectation::describe() const {
     const std::string when = " before frame " + std::to_string(beforeFrame);

@@ -22,6 +22,7 @@ struct Action {
     ActionKind kind = ActionKind::fire;
     std::string item;              ///< the cannon, bomb or switch it acts on
     std::optional<double> angle;   ///< rotate, aim: radians
+    double angleDegrees = 0.0;     ///< rotate, aim: the angle as the script wrote it, in degrees
     std::optional<Vec2> point;     ///< aim: a point to hit
     std::string target;            ///< aim: an item to hit (led when it moves); fire-when: the item to time the shot at
     bool highArc = false;          ///< aim at a point or item: the lobbed arc
@@ -48,6 +49,10 @@ struct ScriptDesc {
     std::vector<Action> actions;           ///< [[action]] sorted by frame, file order within a frame
     std::vector<Expectation> expectations; ///< [[expect]] in file order
 };
+
+/// Degrees as a script writes them, in radians: the one conversion every reader of angles uses,
+/// so an angle written back out in degrees (a recorded session) replays to the same radians.
+double scriptRadians(double degrees);
 
 /// Takes one action on a run (the names were checked when the script was read); "" or why it
 /// could not be done, such as an aim at a point out of the cannon's reach.

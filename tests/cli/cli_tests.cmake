@@ -93,7 +93,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run and check (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play and check (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -135,3 +135,22 @@ rube_cli_test("level balloon summary.json has the goal frame and the hits"
               "run|${RUBE_GAME_LEVELS}/balloon.toml|--script|${RUBE_GAME_LEVELS}/balloon.solution.toml|--out|${frames}/balloon|--size|32x18" 0
               -DFRAMES_DIR=${frames}/balloon "-DSTDOUT_MATCH=goal: +reached at frame 276\n.*summary in ${frames}/balloon/summary.json"
               "-DSUMMARY_MATCH=\"goal_reached\": true,\n  \"goal_frame\": 276,.*\"kind\": \"hit\", \"frame\": 94, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\].*\"kind\": \"shot\", \"frame\": 94, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"frame\": 276, [^\n]*\"item\": \"bullseye\".*\"kind\": \"goal\", \"frame\": 276,.*\"expect\": \"'bullseye' hit before frame 400\", \"met\": true")
+
+# `rube play` (issue 7). Without a display it says so in one line and names the ways on (exit 1);
+# bad input is found before any window is asked for (exit 2). DISPLAY is unset for all of them.
+function(rube_play_test name args exit)
+  add_test(NAME "cli: play ${name}"
+           COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
+                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=play|${args}" -DEXIT=${exit} ${ARGN}
+                   -P ${RUBE_CLI_DIR}/rube_cli.cmake)
+endfunction()
+rube_play_test("without a display names rube run and xvfb-run" "${RUBE_GAME_LEVELS}/ramp.toml" 1
+               "-DSTDERR_LINE=rube play: no display (DISPLAY is not set): render it off-screen with 'rube run ${RUBE_GAME_LEVELS}/ramp.toml --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play ${RUBE_GAME_LEVELS}/ramp.toml'")
+rube_play_test("a physics scene is not a level" "${RUBE_LEVELS}/bounce.toml" 2
+               "-DSTDERR_LINE=rube play: ${RUBE_LEVELS}/bounce.toml is a physics scene, not a level (it has no items, inventory or goal): watch it with 'rube run ${RUBE_LEVELS}/bounce.toml --out DIR'")
+rube_play_test("--record into a missing folder" "${RUBE_GAME_LEVELS}/ramp.toml|--record|${RUBE_CLI_OUT}/no-such-folder/play.toml" 2
+               "-DSTDERR_LINE=rube play: --record ${RUBE_CLI_OUT}/no-such-folder/play.toml: the folder ${RUBE_CLI_OUT}/no-such-folder does not exist")
+rube_play_test("a bad --script is reported at its place" "${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
+               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
+rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit-after|0" 2
+               "-DSTDERR_LINE=rube: --quit-after: expected a whole number of frames from 1 to 1000000000, got '0' (see 'rube play --help')")

@@ -14,6 +14,36 @@
 namespace rube::render {
 namespace {
 
+// GLFW's key codes in the renderer's words; letters are contiguous in both.
+Key toKey(int key) {
+    if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) return static_cast<Key>(static_cast<int>(Key::a) + (key - GLFW_KEY_A));
+    switch (key) {
+    case GLFW_KEY_SPACE: return Key::space;
+    case GLFW_KEY_ESCAPE: return Key::escape;
+    case GLFW_KEY_ENTER: return Key::enter;
+    case GLFW_KEY_KP_ENTER: return Key::enter;
+    case GLFW_KEY_BACKSPACE: return Key::backspace;
+    case GLFW_KEY_DELETE: return Key::deleteKey;
+    case GLFW_KEY_TAB: return Key::tab;
+    case GLFW_KEY_LEFT: return Key::left;
+    case GLFW_KEY_RIGHT: return Key::right;
+    case GLFW_KEY_UP: return Key::up;
+    case GLFW_KEY_DOWN: return Key::down;
+    case GLFW_KEY_LEFT_BRACKET: return Key::leftBracket;
+    case GLFW_KEY_RIGHT_BRACKET: return Key::rightBracket;
+    default: return Key::other;
+    }
+}
+
+MouseButton toButton(int button) {
+    switch (button) {
+    case GLFW_MOUSE_BUTTON_LEFT: return MouseButton::left;
+    case GLFW_MOUSE_BUTTON_RIGHT: return MouseButton::right;
+    case GLFW_MOUSE_BUTTON_MIDDLE: return MouseButton::middle;
+    default: return MouseButton::other;
+    }
+}
+
 std::string lastGlfwError() {
     const char* description = nullptr;
     glfwGetError(&description);
@@ -47,6 +77,8 @@ public:
             throw std::runtime_error("glad could not load the GL 3.3 core functions through GLFW");
         }
         glfwSwapInterval(options.vsync ? 1 : 0);
+        glfwSetWindowUserPointer(window_, this);
+        installCallbacks();
     }
 
     ~WindowContext() override {
@@ -86,7 +118,42 @@ public:
 
     bool closeRequested() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 
+    void setInputListener(InputListener* listener) override { listener_ = listener; }
+
 private:
+    static WindowContext& of(GLFWwindow* window) { return *static_cast<WindowContext*>(glfwGetWindowUserPointer(window)); }
+
+    // The callbacks only translate: GLFW's codes into the renderer's, window coordinates into
+    // framebuffer pixels (they differ by the content scale on high-DPI screens).
+    void installCallbacks() {
+        glfwSetCursorPosCallback(window_, [](GLFWwindow* window, double x, double y) {
+            WindowContext& self = of(window);
+            if (!self.listener_) return;
+            int windowWidth = 0, windowHeight = 0, frameWidth = 0, frameHeight = 0;
+            glfwGetWindowSize(window, &windowWidth, &windowHeight);
+            glfwGetFramebufferSize(window, &frameWidth, &frameHeight);
+            const double sx = windowWidth > 0 ? static_cast<double>(frameWidth) / windowWidth : 1.0;
+            const double sy = windowHeight > 0 ? static_cast<double>(frameHeight) / windowHeight : 1.0;
+            self.listener_->cursorMoved(static_cast<float>(x * sx), static_cast<float>(y * sy));
+        });
+        glfwSetMouseButtonCallback(window_, [](GLFWwindow* window, int button, int action, int /*mods*/) {
+            WindowContext& self = of(window);
+            if (self.listener_) self.listener_->mouseButton(toButton(button), action == GLFW_PRESS);
+        });
+        glfwSetScrollCallback(window_, [](GLFWwindow* window, double /*dx*/, double dy) {
+            WindowContext& self = of(window);
+            if (self.listener_) self.listener_->scrolled(static_cast<float>(dy));
+        });
+        glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+            WindowContext& self = of(window);
+            if (!self.listener_) return;
+            self.listener_->key(toKey(key), action == GLFW_PRESS    ? KeyAction::press
+                                            : action == GLFW_REPEAT ? KeyAction::repeat
+                                                                    : KeyAction::release);
+        });
+    }
+
+    InputListener* listener_ = nullptr;
     GLFWwindow* window_ = nullptr;
     std::vector<std::uint8_t> scratch_;
 };

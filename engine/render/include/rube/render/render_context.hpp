@@ -3,6 +3,7 @@
 
 #include "rube/render/camera.hpp"
 #include "rube/render/image.hpp"
+#include "rube/render/window_input.hpp"
 
 #include <memory>
 #include <string>
@@ -26,6 +27,9 @@ public:
     virtual void present() = 0;
     /// Whether the user asked to close the window; an offscreen context never closes.
     virtual bool closeRequested() const { return false; }
+    /// Sends the window's keyboard and mouse input to `listener` (nullptr: to no one) from now
+    /// on; the listener must outlive the context or be unset. Offscreen there is no input.
+    virtual void setInputListener(InputListener* /*listener*/) {}
 };
 
 /// An offscreen context rendered on the CPU by Mesa (OSMesa, llvmpipe): needs no display and no

@@ -1,0 +1,31 @@
+#pragma once
+/// `rube play LEVEL`: the level in a GLFW window, played by hand with the mouse and keys; what the
+/// player does can be recorded as a script that `rube run` replays off-screen to the same frames.
+
+#include "rube/render/camera.hpp"
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+namespace rube::game {
+
+/// What `rube play` was asked to do.
+struct PlayOptions {
+    std::string level;                        ///< the level file
+    std::string script;                       ///< --script: start from its placements and aims
+    std::string record;                       ///< --record: write the session as a script here when it ends
+    render::FrameSize size{1280, 720};        ///< --size of the level area (the bar adds its height)
+    bool runAtOnce = false;                   ///< --run: start the machine without waiting for Space
+    std::optional<std::int64_t> quitAfter;    ///< --quit-after N: close N frames after the machine starts
+    int stepsPerFrame = 0;                    ///< --steps-per-frame K: fixed pace; 0 follows real time
+    bool vsync = true;                        ///< false with --no-vsync: draw as fast as possible
+};
+
+/// Plays a level in a window until it is closed (or Escape, or --quit-after), then writes the
+/// recording and prints a summary. Returns 0 done, 1 no window could be opened (the message names
+/// the ways on without a display), 2 bad input (level, script, record path).
+int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err);
+
+} // namespace rube::game

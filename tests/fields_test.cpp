@@ -30,7 +30,7 @@ int addBall(World& world, double mass, double radius = 0.5, Vec2 velocity = {}, 
     return world.addCircle(ball);
 }
 
-constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver};
+constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver, Method::automatic};
 
 } // namespace
 

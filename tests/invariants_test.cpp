@@ -15,7 +15,7 @@ using namespace rube;
 namespace {
 
 constexpr int kScenes = 10'000;
-constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver};
+constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver, Method::automatic};
 
 // splitmix64: a tiny, portable generator (std's distributions differ between libraries).
 class Random {

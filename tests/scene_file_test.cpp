@@ -191,7 +191,7 @@ TEST_CASE("values out of range say the range and the value", "[errors]") {
     CHECK(errorOf("name = \"x\"\n[world]\ntime_step = 0\n") == "s.toml:3:13: time_step must be greater than 0, got 0");
     CHECK(errorOf("name = \"x\"\n[world]\nsubsteps = 0\n") == "s.toml:3:12: substeps must be between 1 and 1000, got 0");
     CHECK(errorOf("name = \"x\"\n[world]\nmethod = \"exat\"\n") ==
-          "s.toml:3:10: method must be one of discrete, turn-based, exact, solver, got 'exat' (did you mean 'exact'?)");
+          "s.toml:3:10: method must be one of discrete, turn-based, exact, solver, auto, got 'exat' (did you mean 'exact'?)");
     CHECK(errorOf("name = \"x\"\n[world]\nbounds = { min = [0, 0], max = [1, 0] }\n") ==
           "s.toml:3:32: bounds max must be greater than min in both x and y, got min [0, 0] and max [1, 0]");
     CHECK(errorOf("name = \"\"\n") == "s.toml:1:8: name must not be empty");

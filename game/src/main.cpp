@@ -28,7 +28,9 @@ constexpr const char* kRunFooter =
     "Methods: discrete (fixed step, pushes overlaps apart; tunnels when speed x dt > 2r),\n"
     "  turn-based (bodies move one by one until their first impact; order matters),\n"
     "  exact (earliest time of impact over all pairs, one at a time),\n"
-    "  solver (substepped contact solver, for piles and resting contact).\n"
+    "  solver (substepped contact solver, for piles and resting contact),\n"
+    "  auto (the cheapest that holds, step by step: exact while it can afford the scene's\n"
+    "  impacts, the solver for piles, crowds and friction; the default for levels).\n"
     "Trace: CSV with the header step,time,body,x,y,vx,vy,angle,omega,radius; one row per\n"
     "  dynamic circle per step. Step 0 is the initial state, so N steps give N + 1 rows per\n"
     "  body. body is the circle's index: [[circle]]s in file order, then [[circle_grid]]s row\n"
@@ -166,7 +168,7 @@ int main(int argc, char** argv) {
     runCommand->add_option("--trace", run.trace, "Write every dynamic body's state at every step to this CSV file")
         ->type_name("FILE");
     runCommand->add_option("--method", run.method,
-                           "Time-step method, overriding the scene's: discrete, turn-based, exact or solver")
+                           "Time-step method, overriding the scene's: discrete, turn-based, exact, solver or auto")
         ->type_name("NAME");
     // --out and the options that only mean something with it are checked after parsing, not
     // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.

@@ -174,6 +174,7 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
         return 1;
     }
     out << "level:            " << level.name << '\n';
+    out << "method:           " << methodDescription(run.world()) << '\n';
     out << "steps:            " << run.frame() << '\n';
     for (const GameEvent& e : run.events())
         out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item) << '\n';

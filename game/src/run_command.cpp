@@ -62,7 +62,7 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
     const StepStats& s = world.stats();
     char text[160];
     out << "scene:            " << scene.name << '\n';
-    out << "method:           " << methodName(world.def().method) << '\n';
+    out << "method:           " << methodDescription(world) << '\n';
     out << "steps:            " << s.steps << '\n';
     std::snprintf(text, sizeof text, "%.6g s", world.time());
     out << "simulated time:   " << text << '\n';
@@ -95,6 +95,13 @@ std::int64_t stepsOf(const RunOptions& options, const SceneDesc& scene) {
 }
 
 } // namespace
+
+std::string methodDescription(const World& world) {
+    std::string text(methodName(world.def().method));
+    if (world.def().method != Method::automatic) return text;
+    const std::int64_t solver = world.stats().autoSolverSteps;
+    return text + " (exact " + std::to_string(world.stats().steps - solver) + " steps, solver " + std::to_string(solver) + ")";
+}
 
 int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     std::optional<Method> method;

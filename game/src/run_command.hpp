@@ -8,7 +8,15 @@
 #include <optional>
 #include <string>
 
+namespace rube {
+class World;
+}
+
 namespace rube::game {
+
+/// The method's name for a summary; for auto, also how its steps were shared:
+/// "auto (exact 590 steps, solver 10)".
+std::string methodDescription(const World& world);
 
 /// What `rube run` was asked to do.
 struct RunOptions {

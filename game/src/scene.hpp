@@ -41,7 +41,7 @@ struct SceneDesc {
 };
 
 /// Every time-step method, in the order help and error messages list them.
-inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver};
+inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver, Method::automatic};
 
 /// The number of steps a run takes when the scene has no duration (10 s at 60 steps per second).
 inline constexpr std::int64_t kDefaultSteps = 600;

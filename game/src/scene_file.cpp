@@ -212,6 +212,10 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     readSegments(root, reading);
     readLevel(root, reading);
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    // A level that names no method gets "auto", the cheapest that holds for what it does; a
+    // physics scene keeps the exact method, the course's reference, unless it names another.
+    const toml::table* world = document["world"].as_table();
+    if (scene.level.isLevel() && !(world && world->contains("method"))) scene.world.method = Method::automatic;
     return {std::move(scene), {}};
 }
 

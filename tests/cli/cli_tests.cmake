@@ -85,7 +85,7 @@ rube_cli_test("usage --trails without --out" "run|${RUBE_LEVELS}/bounce.toml|--t
 rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-key.toml|--no-render|--trace|${RUBE_CLI_OUT}/bad.csv" 2
               -DSTDERR_FIXTURE=${RUBE_CLI_DIR}/bad-unknown-key.toml -DTRACE=${RUBE_CLI_OUT}/bad.csv -DNO_TRACE=ON)
 rube_cli_test("run unknown method leaves no trace" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--method|exat|--trace|${RUBE_CLI_OUT}/method.csv" 2
-              "-DSTDERR_LINE=rube run: unknown method 'exat' (valid methods: discrete, turn-based, exact, solver)"
+              "-DSTDERR_LINE=rube run: unknown method 'exat' (valid methods: discrete, turn-based, exact, solver, auto)"
               -DTRACE=${RUBE_CLI_OUT}/method.csv -DNO_TRACE=ON)
 rube_cli_test("run missing file" "run|no-such-scene.toml|--no-render" 2 "-DSTDERR_LINE=no-such-scene.toml: cannot open file")
 rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--trace|${RUBE_CLI_OUT}/no/such/t.csv" 2

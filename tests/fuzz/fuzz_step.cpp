@@ -23,7 +23,7 @@ private:
     std::size_t pos_ = 0;
 };
 
-constexpr rube::Method kMethods[] = {rube::Method::discrete, rube::Method::turnBased, rube::Method::exact, rube::Method::solver};
+constexpr rube::Method kMethods[] = {rube::Method::discrete, rube::Method::turnBased, rube::Method::exact, rube::Method::solver, rube::Method::automatic};
 
 } // namespace
 

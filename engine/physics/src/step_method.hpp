@@ -35,5 +35,6 @@ std::unique_ptr<StepMethod> makeDiscreteMethod();
 std::unique_ptr<StepMethod> makeTurnBasedMethod();
 std::unique_ptr<StepMethod> makeExactMethod();
 std::unique_ptr<StepMethod> makeSolverMethod();
+std::unique_ptr<StepMethod> makeAutoMethod();
 
 } // namespace rube

@@ -5,6 +5,7 @@
 #include "step_method.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 namespace rube {
@@ -17,18 +18,19 @@ std::unique_ptr<StepMethod> makeMethod(Method method) {
     case Method::turnBased: return makeTurnBasedMethod();
     case Method::exact: return makeExactMethod();
     case Method::solver: return makeSolverMethod();
+    case Method::automatic: return makeAutoMethod();
     }
     throw std::invalid_argument("unknown method");
 }
 
-constexpr std::string_view kMethodNames[] = {"discrete", "turn-based", "exact", "solver"};
+constexpr std::string_view kMethodNames[] = {"discrete", "turn-based", "exact", "solver", "auto"};
 
 } // namespace
 
 std::string_view methodName(Method method) { return kMethodNames[static_cast<int>(method)]; }
 
 std::optional<Method> methodFromName(std::string_view name) {
-    for (int i = 0; i < 4; ++i)
+    for (int i = 0; i < static_cast<int>(std::size(kMethodNames)); ++i)
         if (kMethodNames[i] == name) return static_cast<Method>(i);
     return std::nullopt;
 }

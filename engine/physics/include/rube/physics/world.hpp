@@ -19,6 +19,7 @@ enum class Method : std::uint8_t {
     turnBased, ///< bodies move one by one until their first impact (lecture 3): order matters
     exact,     ///< earliest time of impact over all pairs, resolved one at a time (lecture 3's ideal method)
     solver,    ///< substepped sequential-impulse contact solver, for piles and resting contact
+    automatic, ///< "auto": the cheapest that holds, step by step: exact while bodies are few and impacts sparse, else the solver
 };
 
 /// The method's name as scene files and the command line spell it ("turn-based", ...).
@@ -67,6 +68,7 @@ struct StepStats {
     std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
     std::int64_t escapes = 0;        ///< bodies that left the bounds (each counted once)
     int maxEventsInStep = 0;
+    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver (the rest went to exact)
     bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state
 };
 

@@ -240,3 +240,30 @@ TEST_CASE("rope: a rope to nothing or of no length is refused", "[rope]") {
     CHECK_THROWS_AS(world.addRope(RopeDef{ball, -1, {}, 0.0}), std::invalid_argument);
     CHECK_THROWS_AS(world.cutRope(0), std::out_of_range);
 }
+
+TEST_CASE("rope: a double pendulum's ropes never stretch, though either may go slack", "[rope]") {
+    // The pendulum scene's double pendulum: the upper ball level with its anchor, the lower hanging
+    // from it. Ropes pulled taut one after another would stretch each other by centimetres; the
+    // extra passes over chained ropes hold both to their lengths.
+    for (const Method method : kMethods) {
+        CAPTURE(methodName(method));
+        World world = openWorld(method);
+        CircleDef upper, lower;
+        upper.position = {8.0, 5.0};
+        upper.radius = 0.2;
+        lower.position = {8.0, 3.5};
+        lower.radius = 0.2;
+        const int iu = world.addCircle(upper), il = world.addCircle(lower);
+        world.addRope(RopeDef{iu, -1, {6.5, 5.0}, 1.5});
+        world.addRope(RopeDef{il, iu, {}, 1.5});
+        double stretch = 0.0;
+        for (int i = 0; i < 60 * 12; ++i) {
+            world.step();
+            const Vec2 pu = world.circles()[0].position, pl = world.circles()[1].position;
+            stretch = std::max({stretch, pu.distance({6.5, 5.0}) - 1.5, pl.distance(pu) - 1.5});
+        }
+        CAPTURE(stretch);
+        CHECK(stretch < 1e-4);
+        CHECK(world.stats().nonFinite == false);
+    }
+}

@@ -36,6 +36,8 @@ constexpr Expected kExpected[] = {
     {"slope-rest", "", 180, 0x29c6b15c4aad14b0ull},
     {"rolling", "", 180, 0x6c36752f98a83189ull},
     {"float", "", 300, 0x72fe7040c1674a66ull},
+    {"pendulum", "", 300, 0x52e300f873b9a241ull},
+    {"pendulum", "solver", 300, 0x91f9089acb221935ull},
     {"pool-break", "discrete", 240, 0x8cd878b4b51a0b74ull},
     {"pool-break", "turn-based", 240, 0xe626442c4809d8ddull},
     {"pool-break", "solver", 240, 0xeccc6c082bbcf7c6ull},

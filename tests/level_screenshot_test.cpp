@@ -74,3 +74,4 @@ TEST_CASE("trampoline: first and goal frames", "[screenshot][level]") { checkLev
 TEST_CASE("balloon: first and goal frames", "[screenshot][level]") { checkLevel("balloon"); }
 TEST_CASE("magnet: first and goal frames", "[screenshot][level]") { checkLevel("magnet"); }
 TEST_CASE("fan: first and goal frames", "[screenshot][level]") { checkLevel("fan"); }
+TEST_CASE("rope: first and goal frames", "[screenshot][level]") { checkLevel("rope"); }

@@ -16,7 +16,8 @@ using namespace rube::game;
 namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
-                               "bucket", "trampoline", "balloon",       "magnet",         "fan"};
+                               "bucket", "trampoline", "balloon",       "magnet",         "fan",
+                               "rope"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -293,4 +294,49 @@ TEST_CASE("levels and scripts word a bad reference alike", "[level]") {
           "s.toml:3:13: explosion 'gun' is a cannon, not a bomb (the level has no bomb)");
     CHECK(scriptError("[[expect]]\nhit = \"runnr\"\nbefore_frame = 9\n") ==
           "s.toml:3:7: unknown target or switch 'runnr' in level 'moving-target' (did you mean 'runner'?)");
+}
+
+TEST_CASE("rope: the switch cuts the rope; too early or too late and the ball misses the bucket", "[level][rope]") {
+    const SceneDesc level = loadLevel("rope");
+    const auto playFrom = [&](double height) {
+        const std::vector<Placement> drop{{ItemKind::heavy, {-5.0, height}, 0.0, "", {}}};
+        REQUIRE_FALSE(checkPlacements(level, drop));
+        LevelRun run(level, drop);
+        for (int i = 0; i < 480; ++i) run.step();
+        return run;
+    };
+    const LevelRun solved = playFrom(5.2);
+    CHECK(solved.goalFrame());
+    CHECK(solved.world().ropes()[0].cut);
+    CHECK_FALSE(playFrom(3.0).goalFrame()); // cut on the way down: it falls short
+    CHECK_FALSE(playFrom(8.0).goalFrame()); // cut on the way up: it flies over
+    // Nothing placed: the rope holds and the ball swings on, always exactly L from the anchor.
+    LevelRun idle(level, {});
+    double worst = 0.0;
+    for (int i = 0; i < 480; ++i) {
+        idle.step();
+        worst = std::max(worst, std::abs(idle.world().circles()[0].position.distance({0.0, 6.0}) - 3.0));
+    }
+    CHECK_FALSE(idle.world().ropes()[0].cut);
+    CHECK(worst < 1e-12);
+}
+
+TEST_CASE("rope: a script cuts a rope by name; an unknown rope is an error at its place", "[level][rope]") {
+    const SceneDesc level = loadLevel("rope");
+    const ScriptLoad ok = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rope\"\n", "s.toml", level);
+    REQUIRE(ok.script);
+    LevelRun run = play(level, *ok.script, 480);
+    CHECK(run.world().ropes()[0].cut);
+    CHECK(run.goalFrame()); // cut at the same moment the switch would: the same throw
+    const ScriptLoad bad = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rpoe\"\n", "s.toml", level);
+    REQUIRE(bad.errors.size() == 1);
+    CHECK(bad.errors[0].format() == "s.toml:5:8: unknown rope 'rpoe' in level 'rope' (did you mean 'rope'?)");
+}
+
+TEST_CASE("rope: a switch may name a rope; a name that is neither item nor rope is still refused", "[level][rope]") {
+    const std::string base = "name = \"t\"\n[[circle]]\nname = \"bob\"\nposition = [0, 1]\nradius = 0.2\n"
+                             "[[rope]]\nname = \"line\"\ncircle = \"bob\"\nanchor = [0, 3]\n"
+                             "[[item]]\nkind = \"switch\"\nposition = [3, 0]\n";
+    CHECK(firstError(base + "triggers = \"line\"\n") == "no error");
+    CHECK(firstError(base + "triggers = \"lnie\"\n").starts_with("t.toml:13:12: unknown cannon, bomb, fan or magnet 'lnie'"));
 }

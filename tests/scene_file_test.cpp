@@ -47,7 +47,7 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
     const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "float", "newtons-cradle",
-                                            "pile", "pool-break", "projectile", "rolling", "slope-rest"};
+                                            "pendulum", "pile", "pool-break", "projectile", "rolling", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;
@@ -277,4 +277,47 @@ TEST_CASE("typo suggestions are close matches only", "[errors]") {
     CHECK(closestMatch("timestep", keys) == "time_step");
     CHECK_FALSE(closestMatch("colour", keys));
     CHECK_FALSE(closestMatch("x", keys));
+}
+
+TEST_CASE("[[rope]] joins a circle named or numbered to an anchor or another circle", "[scene][rope]") {
+    const std::string balls = "name = \"x\"\n"
+                              "[[circle]]\nname = \"bob\"\nposition = [0, 1]\nradius = 0.2\n"        // lines 2-5
+                              "[[circle]]\nposition = [0, 0]\nradius = 0.2\n"                        // lines 6-8
+                              "[[circle]]\nname = \"post\"\nposition = [3, 3]\nradius = 0.2\nmotion = \"static\"\n"; // 9-13
+    SECTION("an anchor, the length taken from where the ends start") {
+        const SceneDesc scene = sceneOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\n");
+        REQUIRE(scene.ropes.size() == 1);
+        CHECK(scene.ropes[0].circle == 0);
+        CHECK(scene.ropes[0].other == -1);
+        CHECK(scene.ropes[0].length == 2.0);
+        World world = buildWorld(scene);
+        CHECK(world.ropes().size() == 1);
+    }
+    SECTION("another circle by index, and a name to cut it by") {
+        const SceneDesc scene = sceneOf(balls + "[[rope]]\nname = \"r\"\ncircle = 1\nother = \"bob\"\nlength = 1.5\n");
+        REQUIRE(scene.ropes.size() == 1);
+        CHECK(scene.ropes[0].other == 0);
+        CHECK(scene.ropes[0].length == 1.5);
+        CHECK(scene.findRope("r") == 0);
+        CHECK(scene.findRope("s") == -1);
+    }
+    SECTION("mistakes, each at its place") {
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bbo\"\nanchor = [0, 3]\n") ==
+              "s.toml:15:10: unknown circle 'bbo' (did you mean 'bob'?)");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = 7\nanchor = [0, 3]\n") ==
+              "s.toml:15:10: circle must be a circle's index from 0 to 3 (exclusive) or its name, got 7");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\nother = 1\n") ==
+              "s.toml:16:10: a rope ends at an anchor or at another circle, not both: remove anchor or other");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\n") == "s.toml:14:1: missing required key 'anchor' in [[rope]]");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"post\"\nanchor = [0, 3]\n") ==
+              "s.toml:15:10: a rope's circle must be dynamic (the rope pulls it); use other for a fixed end");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\nlength = 1\n") ==
+              "s.toml:17:10: the rope's ends start 2 m apart, more than its length 1");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\nlength = 0\n") ==
+              "s.toml:17:10: length must be greater than 0, got 0");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nother = \"bob\"\n") ==
+              "s.toml:16:9: a rope cannot join a circle to itself");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchr = [0, 3]\nanchor = [0, 3]\n") ==
+              "s.toml:16:1: unknown key 'anchr' in [[rope]] (did you mean 'anchor'?)");
+    }
 }

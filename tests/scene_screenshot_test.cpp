@@ -39,6 +39,7 @@ constexpr Golden kGoldens[] = {
     {"bullet", 1, true, true},           // the step that crosses the line: the impact and the way back
     {"float", 300, false, false},        // t = 5 s: one high, one half under, one on the bottom
     {"newtons-cradle", 61, false, true}, // just after the chain of impacts at t = 1 s
+    {"pendulum", 90, true, false},       // t = 1.5 s: the three ropes out of step, the double pendulum folded
     {"pile", 45, false, false},          // t = 0.75 s: the balls landing on the pile
     {"pool-break", 20, true, true},      // t = 0.33 s: the break
     {"projectile", 90, true, false},     // t = 1.5 s: past the top of the parabola
@@ -104,6 +105,7 @@ TEST_CASE("bounce matches its golden frames", "[screenshot][scene]") { checkGold
 TEST_CASE("bullet matches its golden frames", "[screenshot][scene]") { checkGoldens("bullet"); }
 TEST_CASE("float matches its golden frames", "[screenshot][scene]") { checkGoldens("float"); }
 TEST_CASE("newtons-cradle matches its golden frames", "[screenshot][scene]") { checkGoldens("newtons-cradle"); }
+TEST_CASE("pendulum matches its golden frames", "[screenshot][scene]") { checkGoldens("pendulum"); }
 TEST_CASE("pile matches its golden frames", "[screenshot][scene]") { checkGoldens("pile"); }
 TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { checkGoldens("pool-break"); }
 TEST_CASE("projectile matches its golden frames", "[screenshot][scene]") { checkGoldens("projectile"); }

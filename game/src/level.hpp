@@ -39,7 +39,7 @@ struct ItemDesc {
     bool on = true;              ///< magnet, fan: working from the start (a switch flips it)
     Trigger trigger = Trigger::impact; ///< bomb: what sets it off
     double fuse = 0.0;           ///< bomb with a timer: seconds from the start
-    std::string triggers;        ///< switch: the name of the cannon or bomb it sets off, or the fan or magnet it flips
+    std::string triggers;        ///< switch: the name of the cannon or bomb it sets off, the fan or magnet it flips, or the [[rope]] it cuts
     int path = -1;               ///< target: index of the [[path]] it follows, or -1 (still)
     SourcePlace place;           ///< where the file wrote it, for messages about it
 };

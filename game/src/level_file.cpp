@@ -241,7 +241,7 @@ void readLevel(TableReader& root, SceneReading& reading) {
         while (next < reading.scene.level.items.size() && reading.scene.level.items[next].kind != ItemKind::switchItem) ++next;
         if (next >= reading.scene.level.items.size()) break;
         const std::string& target = reading.scene.level.items[next++].triggers;
-        if (target.empty()) continue;
+        if (target.empty() || reading.scene.findRope(target) >= 0) continue; // a switch may cut a named [[rope]]
         const toml::node* node = table->get("triggers");
         checkReference(reading.diag, node ? placeOf(node->source()) : placeOf(table->source()), "triggers", target,
                        {ItemKind::cannon, ItemKind::bomb, ItemKind::fan, ItemKind::magnet}, reading.scene.level);

@@ -160,6 +160,8 @@ void LevelRun::detonate(int bomb) {
 
 void LevelRun::toggle(int item) {
     const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
+    if (desc.kind == ItemKind::switchItem)
+        if (const int rope = scene_.findRope(desc.triggers); rope >= 0) return world_.cutRope(rope);
     const int target = desc.kind == ItemKind::switchItem ? find(desc.triggers) : item;
     if (target < 0) return;
     const ItemKind kind = items_[static_cast<std::size_t>(target)].kind;
@@ -168,6 +170,10 @@ void LevelRun::toggle(int item) {
     else if (kind == ItemKind::bomb) detonate(target);
     else if (kind == ItemKind::magnet) world_.fields().magnets[static_cast<std::size_t>(field)].on ^= true;
     else if (kind == ItemKind::fan) world_.fields().winds[static_cast<std::size_t>(field)].on ^= true;
+}
+
+void LevelRun::cutRope(std::string_view name) {
+    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(rope);
 }
 
 void LevelRun::markHit(int item, Vec2 point) {

@@ -90,8 +90,10 @@ public:
     /// Sets a bomb off now.
     void detonate(int bomb);
     /// Flips a switch as if a ball had hit it (the cannon or bomb it names goes off, the fan or magnet it
-    /// names turns on or off), or turns a fan or magnet itself on or off.
+    /// names turns on or off, the rope it names is cut), or turns a fan or magnet itself on or off.
     void toggle(int item);
+    /// Cuts the [[rope]] called `name` (a cut rope stays cut; an unknown name does nothing).
+    void cutRope(std::string_view name);
 
 private:
     void addItem(const ItemDesc& item);

@@ -2,6 +2,8 @@
 // are in pixels so they read at any zoom, shapes in metres so they sit where the physics says.
 #include "level_view.hpp"
 
+#include "scene_view.hpp"
+
 #include "rube/render/palette.hpp"
 
 #include <algorithm>
@@ -77,6 +79,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
         const bool thin = s.radius * ppm < 0.5 * kThinLine;
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius), style("ground", "ground_outline", thin ? kThinLine : kOutline));
     }
+    drawRopes(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
     std::vector<char> itemCircle(world.circles().size(), 0);
     for (std::size_t i = 0; i < run.items().size(); ++i)

@@ -104,6 +104,7 @@ std::string takeAction(const Action& a, LevelRun& run) {
     case ActionKind::detonate: run.detonate(item); return "";
     case ActionKind::toggle: run.toggle(item); return "";
     case ActionKind::fireWhen: return run.fireWhen(item, run.find(a.target));
+    case ActionKind::cut: run.cutRope(a.item); return "";
     }
     return "";
 }

@@ -19,11 +19,18 @@ std::size_t SceneDesc::dynamicCircleCount() const {
                                                   [](const CircleDef& c) { return c.motion == Motion::dynamic; }));
 }
 
+int SceneDesc::findRope(std::string_view name) const {
+    for (std::size_t i = 0; i < ropeNames.size(); ++i)
+        if (!name.empty() && ropeNames[i] == name) return static_cast<int>(i);
+    return -1;
+}
+
 World buildWorld(const SceneDesc& scene) {
     World world(scene.world);
     for (const NamedPath& path : scene.paths) world.addPath(path.path);
     for (const CircleDef& circle : scene.circles) world.addCircle(circle);
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
+    for (const RopeDef& rope : scene.ropes) world.addRope(rope);
     world.fields().waters = scene.waters;
     return world;
 }

@@ -32,12 +32,16 @@ struct SceneDesc {
     std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
     std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
     std::vector<Water> waters;      ///< [[water]] pools, in file order
+    std::vector<RopeDef> ropes;     ///< [[rope]] in file order: index i is the World's rope i
+    std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.
     std::int64_t defaultSteps() const;
     /// How many circles move under gravity and impacts (the bodies a trace records).
     std::size_t dynamicCircleCount() const;
+    /// The index of the rope called `name`, or -1.
+    int findRope(std::string_view name) const;
 };
 
 /// Every time-step method, in the order help and error messages list them.
@@ -46,7 +50,7 @@ inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Me
 /// The number of steps a run takes when the scene has no duration (10 s at 60 steps per second).
 inline constexpr std::int64_t kDefaultSteps = 600;
 
-/// Builds the World: paths first, so that body path indices are valid, then circles and segments.
+/// Builds the World: paths first, so that body path indices are valid, then circles, segments and ropes.
 World buildWorld(const SceneDesc& scene);
 
 } // namespace rube::game

@@ -24,6 +24,8 @@ void readCircles(TableReader& root, SceneReading& reading);
 void readCircleGrids(TableReader& root, SceneReading& reading);
 /// Reads every [[segment]] of the file into scene.segments.
 void readSegments(TableReader& root, SceneReading& reading);
+/// Reads every [[rope]] of the file into scene.ropes (after the circles, which ropes name).
+void readRopes(TableReader& root, SceneReading& reading);
 
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.
 void readLevel(TableReader& root, SceneReading& reading);

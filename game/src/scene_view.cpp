@@ -27,6 +27,8 @@ constexpr float kThinLineWidth = 3.0f;
 constexpr float kSpokeMinRadius = 4.0f;
 constexpr float kSmallOutlineWidth = 1.0f;
 constexpr float kTrailWidth = 2.0f;       // pixels
+constexpr float kRopeWidth = 2.0f;        // pixels: thinner than a wall's 3, so a rope never reads as one
+constexpr float kRopePinRadius = 0.06f;   // m: the anchor's pin
 // A trail keeps a point per step and per impact; past this many a trail of tiny steps stops growing.
 constexpr std::size_t kMaxTrailPoints = 2000;
 // Impact markers kept at most: a pile resolves hundreds of contacts per step.
@@ -78,6 +80,17 @@ std::string SceneView::hudLine(const World& world, std::int64_t frame) const {
     return line;
 }
 
+void drawRopes(const World& world, render::DrawList& list) {
+    const Palette& palette = Palette::greybox();
+    for (const Rope& rope : world.ropes()) {
+        if (rope.cut) continue; // a cut rope is gone from the picture as from the physics
+        const Vec2 ball = world.circles()[static_cast<std::size_t>(rope.circle)].position;
+        const Vec2 end = rope.other >= 0 ? world.circles()[static_cast<std::size_t>(rope.other)].position : rope.anchor;
+        list.line(toPoint(end), toPoint(ball), kRopeWidth, palette["rope"]);
+        if (rope.other < 0) list.circle(toPoint(end), kRopePinRadius, styleFor(Motion::fixed, kSmallOutlineWidth));
+    }
+}
+
 void SceneView::drawSegments(const World& world, render::DrawList& list) const {
     for (const Segment& s : world.segments()) {
         const bool thin = s.radius * camera_.pixelsPerMetre(frame_) < 0.5 * kThinLineWidth;
@@ -119,6 +132,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     list.background = palette["background"];
     // Back to front: walls, then where balls have been, the balls, and the debug marks on top.
     drawSegments(world, list);
+    drawRopes(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.

@@ -15,6 +15,10 @@
 
 namespace rube::game {
 
+/// Draws every uncut rope of `world` as a line from its anchor (with a small pin) or other circle
+/// to its ball's centre; drawn before the balls, so the line meets each ball at its rim.
+void drawRopes(const World& world, render::DrawList& list);
+
 /// What a view draws besides the bodies; a caller changes only what it needs.
 struct ViewOptions {
     bool trails = false;         ///< --trails: each dynamic circle's recent path (the lecture's debug key D)

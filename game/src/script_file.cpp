@@ -14,7 +14,7 @@ namespace {
 constexpr std::string_view kTopKeys[] = {"level", "steps", "capture", "place", "action", "expect"};
 constexpr std::string_view kCaptureKeys[] = {"size", "every"};
 constexpr std::string_view kPlaceKeys[] = {"kind", "position", "angle", "name"};
-constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle", "fire-when"};
+constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle", "fire-when", "cut"};
 constexpr std::string_view kRotateKeys[] = {"frame", "do", "item", "angle"};
 constexpr std::string_view kAimKeys[] = {"frame", "do", "item", "angle", "point", "target", "arc"};
 constexpr std::string_view kItemKeys[] = {"frame", "do", "item"};
@@ -123,6 +123,16 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
     case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
     case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem, ItemKind::fan, ItemKind::magnet}); break;
+    case ActionKind::cut:
+        // Ropes are not items: they are the level's [[rope]] tables, named there.
+        if (level.findRope(a.item) < 0) {
+            std::vector<std::string_view> names;
+            for (const std::string& name : level.ropeNames)
+                if (!name.empty()) names.push_back(name);
+            action.error(action.valuePlace("item"), "unknown rope '" + a.item + "' in level '" + level.name + "'" +
+                                                        unknownNameHint(a.item, names, "the level has", "the level has no named rope"));
+        }
+        break;
     case ActionKind::fireWhen:
         // The cannon keeps its aim; only the moment of firing is worked out, when the action is taken.
         checkItem(action, "item", a.item, level, {ItemKind::cannon});

@@ -14,13 +14,13 @@
 namespace rube::game {
 
 /// What an action does.
-enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle, fireWhen };
+enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle, fireWhen, cut };
 
 /// One action, taken when the run has taken `frame` steps (before the next one).
 struct Action {
     std::int64_t frame = 0;        ///< steps taken before it happens
     ActionKind kind = ActionKind::fire;
-    std::string item;              ///< the cannon, bomb or switch it acts on
+    std::string item;              ///< the cannon, bomb or switch it acts on, or the rope it cuts
     std::optional<double> angle;   ///< rotate, aim: radians
     double angleDegrees = 0.0;     ///< rotate, aim: the angle as the script wrote it, in degrees
     std::optional<Vec2> point;     ///< aim: a point to hit

@@ -2,6 +2,7 @@
 #include "rube/physics/world.hpp"
 
 #include "field_forces.hpp"
+#include "rope_constraint.hpp"
 #include "step_method.hpp"
 
 #include <cmath>
@@ -78,6 +79,20 @@ int World::addPath(KinematicPath path) {
     return static_cast<int>(paths_.size()) - 1;
 }
 
+int World::addRope(const RopeDef& d) {
+    const auto valid = [&](int index) { return index >= 0 && static_cast<std::size_t>(index) < circles_.size(); };
+    if (!valid(d.circle) || (d.other != -1 && (!valid(d.other) || d.other == d.circle)))
+        throw std::invalid_argument("a rope must join an existing circle to an anchor or to another circle");
+    if (!(d.length > 0.0) || !std::isfinite(d.length)) throw std::invalid_argument("a rope's length must be positive");
+    ropes_.push_back(Rope{d.circle, d.other, d.anchor, d.length, false});
+    return static_cast<int>(ropes_.size()) - 1;
+}
+
+void World::cutRope(int index) {
+    if (index < 0 || static_cast<std::size_t>(index) >= ropes_.size()) throw std::out_of_range("no rope with that index");
+    ropes_[static_cast<std::size_t>(index)].cut = true;
+}
+
 void World::setMethod(Method method) {
     def_.method = method;
     method_ = makeMethod(method);
@@ -114,7 +129,11 @@ void World::step() {
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     StepContext context{def_, circles_, segments_, time_, resting, impacts_, stats_};
+    // Model no more than a scene needs: a world without ropes never enters either rope pass.
+    const bool hasRopes = !ropes_.empty();
+    if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);
     method_->step(context, dt);
+    if (hasRopes) enforceRopes(circles_, ropes_, ropeStarts_, impacts_, dt);
     // Methods that do not model friction cannot change a spin; it carries the angle on (none of
     // them pays for it unless something spins).
     if (!method_->integratesRotation())

@@ -3,6 +3,7 @@
 
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
+#include "rube/physics/rope.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -73,6 +74,7 @@ struct StepStats {
 };
 
 class StepMethod;
+struct RopeStart;
 
 /// A physics world. Not copyable (it owns its method); movable.
 class World {
@@ -88,6 +90,11 @@ public:
     int addSegment(const SegmentDef& def);
     /// Adds a scripted path for kinematic bodies and returns its index.
     int addPath(KinematicPath path);
+    /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its index;
+    /// throws std::invalid_argument for a circle index out of range or a length that is not positive.
+    int addRope(const RopeDef& def);
+    /// Cuts rope `index`: from the next step on it no longer acts (cutting it again does nothing).
+    void cutRope(int index);
 
     /// The world's winds, magnets and thrusters: add to them, or switch them, between steps.
     Fields& fields() { return fields_; }
@@ -109,6 +116,7 @@ public:
     std::span<Segment> segments() { return segments_; }
     std::span<const Segment> segments() const { return segments_; }
     std::span<const KinematicPath> paths() const { return paths_; }
+    std::span<const Rope> ropes() const { return ropes_; }
 
 private:
     void moveKinematicBodies();
@@ -118,6 +126,8 @@ private:
     std::vector<Circle> circles_;
     std::vector<Segment> segments_;
     std::vector<KinematicPath> paths_;
+    std::vector<Rope> ropes_;
+    std::vector<RopeStart> ropeStarts_; ///< per rope, refilled before each step that has ropes
     Fields fields_;
     std::vector<Impact> impacts_;
     std::vector<std::uint8_t> escaped_;

@@ -46,7 +46,7 @@ foreach(row IN LISTS rows)
   list(APPEND seen "${scene}/${engine}")
 endforeach()
 
-foreach(scene bounce projectile pool-break ball-stack pile bullet)
+foreach(scene bounce projectile pool-break ball-stack pile bullet newton-cradle rolling-disc)
   foreach(method discrete turn-based exact solver)
     if(NOT "${scene}/rube-${method}" IN_LIST seen)
       message(FATAL_ERROR "${CSV}: no row for ${scene} on rube-${method}")

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
             const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer ? std::vector<int>{60} : rates;
             for (const int rate : engineRates) {
                 const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, options);
-                std::fprintf(stderr, "%-12s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
+                std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
                              engine.name.c_str(), rate, row.msPerStep, row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
                              row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                 rows.push_back(row);

@@ -18,6 +18,7 @@ struct Metrics {
     double error2 = std::numeric_limits<double>::quiet_NaN(); ///< its second error, if it has one
     double overlap = std::numeric_limits<double>::quiet_NaN(); ///< largest overlap measured, m
     int tunnels = -1;                                          ///< balls that passed through a line
+    double momentum = std::numeric_limits<double>::quiet_NaN(); ///< relative momentum error, where a scene keeps momentum
 };
 
 /// Watches one measurement run: called after every step, never inside the timed loop.

@@ -1,10 +1,12 @@
 # The "bench: quick" test: runs rube_bench --quick and checks that the CSV it writes is well formed
 # (a header, the same number of fields on every row, numbers where numbers belong, every scene on
-# every rube method). It checks that the bench runs, never how fast: CI machines vary too much.
+# every rube method and the scaling sweep's smallest point).
+# It checks that the bench runs, never how fast: CI machines vary too much.
 # Usage: cmake -DBENCH=<rube_bench> -DCSV=<file> -P quick_test.cmake
 
 cmake_minimum_required(VERSION 3.25) # list() keeps empty fields (CMP0007)
 
+file(REMOVE ${CSV})
 execute_process(COMMAND ${BENCH} --quick --csv ${CSV} RESULT_VARIABLE result ERROR_VARIABLE log)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "rube_bench --quick failed (${result}):\n${log}")
@@ -53,5 +55,9 @@ foreach(scene bounce projectile pool-break ball-stack pile bullet newton-cradle 
     endif()
   endforeach()
 endforeach()
+if(NOT "pile-scaling-100/rube-solver" IN_LIST seen)
+  message(FATAL_ERROR "${CSV}: no row for the scaling sweep's pile-scaling-100 on rube-solver")
+endif()
+
 math(EXPR rowCount "${count} - 1")
 message(STATUS "bench: quick: ${rowCount} well-formed rows in ${CSV}")

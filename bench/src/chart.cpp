@@ -15,18 +15,20 @@ namespace {
 
 constexpr double kErrorFloor = 1e-13;
 
-// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string.
-std::string quoted(const std::filesystem::path& p) {
-    std::string q(1, '\'');
-    q += p.string();
-    q += '\'';
-    return q;
-}
+std::string quoted(const std::filesystem::path& p) { return gnuplotQuoted(p); }
 
 // The chart's y value: the headline error, or tunnels for the bullet (counts, linear axis).
 double chartError(const Row& r) { return r.metrics.tunnels >= 0 ? r.metrics.tunnels : r.metrics.error; }
 
 } // namespace
+
+// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string.
+std::string gnuplotQuoted(const std::filesystem::path& p) {
+    std::string q(1, '\'');
+    q += p.string();
+    q += '\'';
+    return q;
+}
 
 std::string drawChart(std::span<const Row> rows, const std::vector<std::string>& sceneOrder,
                       const std::filesystem::path& workDir, const std::filesystem::path& png) {

@@ -3,6 +3,7 @@
 
 #include "chart.hpp"
 #include "csv.hpp"
+#include "failure_sweep.hpp"
 #include "runner.hpp"
 #include "scaling_chart.hpp"
 
@@ -48,12 +49,29 @@ bool runsInScaling(const bench::Engine& engine) {
     return engine.kind == bench::EngineKind::peer || engine.name == "rube-solver";
 }
 
+// The failure table: every probe on every method, written as Markdown. Returns false if unwritable.
+bool writeFailures(const std::string& path, bool quick) {
+    const auto start = std::chrono::steady_clock::now();
+    const bench::failures::Sweep sweep = bench::failures::runSweep(quick);
+    if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream out(path);
+    bench::failures::writeMarkdown(out, sweep, quick ? "rube_bench --quick" : "rube_bench --failures");
+    out.close();
+    if (!out) {
+        std::cerr << "rube_bench: could not write " << path << '\n';
+        return false;
+    }
+    std::cerr << "rube_bench: wrote " << path << " in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"rube_bench: rube's time-step methods against Box2D 2.4.1 and Chipmunk 7.0.3, speed against accuracy"};
-    bool quick = false, list = false, noScaling = false, scalingOnly = false;
-    std::string csvPath, chartPath, scalingChartPath;
+    bool quick = false, list = false, failuresOnly = false, noScaling = false, scalingOnly = false;
+    std::string csvPath, chartPath, scalingChartPath, failuresPath;
     std::vector<std::string> sceneFilter, engineFilter;
     std::vector<int> rates;
     int repeats = 5;
@@ -65,6 +83,8 @@ int main(int argc, char** argv) {
     app.add_option("--scaling-chart", scalingChartPath, "scaling chart PNG (default: screenshots/scaling.png; --quick: none)");
     app.add_flag("--no-scaling", noScaling, "leave out the scaling sweep (pile-scaling-*)");
     app.add_flag("--scaling", scalingOnly, "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
+    app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
+    app.add_option("--failures-md", failuresPath, "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
     app.add_option("--scene", sceneFilter, "run only these scenes (repeatable)");
     app.add_option("--engine", engineFilter, "run only these engines, e.g. rube-solver, box2d-2.4.1 (repeatable)");
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
@@ -81,6 +101,8 @@ int main(int argc, char** argv) {
     }
 
     const std::filesystem::path source = RUBE_SOURCE_DIR;
+    if (failuresPath.empty()) failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
+    if (failuresOnly) return writeFailures(failuresPath, quick) ? 0 : 1;
     if (rates.empty()) rates = quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
     if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
     if (chartPath.empty() && !quick) chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
@@ -144,6 +166,8 @@ int main(int argc, char** argv) {
                                                         scalingChartPath);
         std::cerr << "rube_bench: " << (why.empty() ? "drew " + scalingChartPath : why) << '\n';
     }
+    // The failure table is part of every full run (it takes about a second) unless scenes were picked.
+    if (sceneFilter.empty() && engineFilter.empty() && !scalingOnly && !writeFailures(failuresPath, quick)) return 1;
     std::cerr << "rube_bench: done in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
     return 0;
 }

@@ -124,6 +124,7 @@ Outcome speedProbe(Method method, double travelPerRadius, int phases) {
     constexpr double r = 0.05;
     const double travel = travelPerRadius * r; // speed x dt
     const double speed = travel / kTimeStep;
+    Outcome worst; // the deepest overlap and largest gain over the phases that held
     for (int k = 0; k < phases; ++k) {
         World world = makeWorld(method, 0.0);
         addFloor(world);
@@ -133,8 +134,10 @@ Outcome speedProbe(Method method, double travelPerRadius, int phases) {
         // Below the thin line at y = 0 the ball can only be by passing through it.
         const Outcome out = watch(world, 8, [](const World& w) { return w.circles()[0].position.y < 0.0; }, true);
         if (out.failed()) return out;
+        worst.deepestOverlap = std::max(worst.deepestOverlap, out.deepestOverlap);
+        worst.energyGain = std::max(worst.energyGain, out.energyGain);
     }
-    return {};
+    return worst;
 }
 
 Outcome stackProbe(Method method, int height) {

@@ -86,7 +86,8 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
         out << '\n';
     }
     out << "\n## Every value tried\n\n"
-        << "`ok`, or the failures; in brackets the deepest overlap (fraction of r) and the largest energy gain (relative).\n";
+        << "`ok`, or the failures; in brackets the deepest overlap (fraction of r) and the largest energy gain\n"
+        << "(relative) seen, up to the first failing step, where a run stops (over every start phase that held, for speed).\n";
     for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
         out << "\n### " << sweep.axes[a].name << "\n\n| method |";
         for (const double v : sweep.axes[a].values) out << ' ' << number(v) << " |";

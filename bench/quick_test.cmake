@@ -1,11 +1,13 @@
 # The "bench: quick" test: runs rube_bench --quick and checks that the CSV it writes is well formed
 # (a header, the same number of fields on every row, numbers where numbers belong, every scene on
-# every rube method). It checks that the bench runs, never how fast: CI machines vary too much.
-# Usage: cmake -DBENCH=<rube_bench> -DCSV=<file> -P quick_test.cmake
+# every rube method, the scaling sweep's smallest point and a failure table row per method).
+# It checks that the bench runs, never how fast: CI machines vary too much.
+# Usage: cmake -DBENCH=<rube_bench> -DCSV=<file> -DFAILURES=<file> -P quick_test.cmake
 
 cmake_minimum_required(VERSION 3.25) # list() keeps empty fields (CMP0007)
 
-execute_process(COMMAND ${BENCH} --quick --csv ${CSV} RESULT_VARIABLE result ERROR_VARIABLE log)
+file(REMOVE ${CSV} ${FAILURES})
+execute_process(COMMAND ${BENCH} --quick --csv ${CSV} --failures-md ${FAILURES} RESULT_VARIABLE result ERROR_VARIABLE log)
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "rube_bench --quick failed (${result}):\n${log}")
 endif()
@@ -46,12 +48,24 @@ foreach(row IN LISTS rows)
   list(APPEND seen "${scene}/${engine}")
 endforeach()
 
-foreach(scene bounce projectile pool-break ball-stack pile bullet)
+foreach(scene bounce projectile pool-break ball-stack pile bullet newton-cradle rolling-disc)
   foreach(method discrete turn-based exact solver)
     if(NOT "${scene}/rube-${method}" IN_LIST seen)
       message(FATAL_ERROR "${CSV}: no row for ${scene} on rube-${method}")
     endif()
   endforeach()
 endforeach()
+if(NOT "pile-scaling-100/rube-solver" IN_LIST seen)
+  message(FATAL_ERROR "${CSV}: no row for the scaling sweep's pile-scaling-100 on rube-solver")
+endif()
+
+# The failure table: a Markdown table with one row per method, each cell a failing value or "holds".
+file(READ ${FAILURES} failures)
+foreach(method discrete turn-based exact solver)
+  if(NOT failures MATCHES "\n\\| ${method} \\| [^\n]*\\|[^\n]*\\|[^\n]*\\|[^\n]*\\|\n")
+    message(FATAL_ERROR "${FAILURES}: no table row for ${method}")
+  endif()
+endforeach()
+
 math(EXPR rowCount "${count} - 1")
 message(STATUS "bench: quick: ${rowCount} well-formed rows in ${CSV}")

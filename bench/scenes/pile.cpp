@@ -2,43 +2,17 @@
 // at 60 Hz). The error is the largest overlap in the last simulated second, once the pile has
 // settled; escapes (balls leaving the box's bounds) are counted by the runner.
 
-#include "measure.hpp"
-#include "scene.hpp"
-
-#include <algorithm>
-#include <array>
+#include "pile_type.hpp"
 
 namespace bench {
 namespace {
 
-constexpr double kRadius = 0.1;
-const std::array<LineSpec, 3> kBox{{
-    {.a = {-2.5, 0}, .b = {2.5, 0}},
-    {.a = {-2.5, 0}, .b = {-2.5, 20}},
-    {.a = {2.5, 0}, .b = {2.5, 20}},
-}};
-
 double duration(const SceneSize& size) { return size.quick ? 1.0 : 10.0; }
 
-class PileProbe final : public Probe {
-public:
-    PileProbe(const SceneSize& size, double timeStep) : firstMeasured_(static_cast<int>((duration(size) - 1.0) / timeStep)) {}
-
-    void observe(const Sim& sim, int step, double) override {
-        if (step <= firstMeasured_) return; // the last simulated second only: the pile has settled
-        overlap_ = std::max(overlap_, largestOverlap(sim, kRadius, kBox));
-    }
-    Metrics finish(const Sim&) override {
-        Metrics m;
-        m.error = overlap_;
-        m.overlap = overlap_;
-        return m;
-    }
-
-private:
-    int firstMeasured_;
-    double overlap_ = 0.0;
-};
+// 20 columns x 50 rows; --quick: 10 x 10 in the same box.
+PileLayout layout(const SceneSize& size) {
+    return size.quick ? PileLayout{.balls = 100, .columns = 10} : PileLayout{.balls = 1000, .columns = 20};
+}
 
 [[maybe_unused]] const bool registered = registerScene({
     .name = "pile",
@@ -49,20 +23,8 @@ private:
     .duration = duration,
     .boundsMin = {-10, -10},
     .boundsMax = {10, 40},
-    .build =
-        [](Sim& sim, const SceneSize& size) {
-            for (const LineSpec& line : kBox) sim.addLine(line);
-            // 20 columns x 50 rows, 4 cm apart, every other row shifted 6 cm so that the columns do
-            // not fall straight onto each other (as levels/physics/pile.toml); --quick: 10 x 10.
-            const int columns = size.quick ? 10 : 20, rows = size.quick ? 10 : 50;
-            for (int row = 0; row < rows; ++row) {
-                const double shift = row % 2 == 1 ? 0.06 : 0.0;
-                for (int column = 0; column < columns; ++column)
-                    sim.addBall({.position = {-2.28 + column * 0.24 + shift, 0.5 + row * 0.24},
-                                 .radius = kRadius, .mass = 0.1, .bounciness = 0.3, .friction = 0.4});
-            }
-        },
-    .probe = [](const SceneSize& size, double timeStep) { return std::make_unique<PileProbe>(size, timeStep); },
+    .build = [](Sim& sim, const SceneSize& size) { buildPile(sim, layout(size)); },
+    .probe = [](const SceneSize& size, double timeStep) { return pileProbe(layout(size), duration(size), timeStep); },
 });
 
 } // namespace

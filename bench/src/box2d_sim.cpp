@@ -72,7 +72,7 @@ public:
     int ballCount() const override { return static_cast<int>(balls_.size()); }
     BallState ball(int i) const override {
         const b2Body* b = balls_[static_cast<std::size_t>(i)];
-        return {{b->GetPosition().x, b->GetPosition().y}, {b->GetLinearVelocity().x, b->GetLinearVelocity().y}};
+        return {{b->GetPosition().x, b->GetPosition().y}, {b->GetLinearVelocity().x, b->GetLinearVelocity().y}, b->GetAngularVelocity()};
     }
 
 private:

@@ -15,18 +15,20 @@ namespace {
 
 constexpr double kErrorFloor = 1e-13;
 
-// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string.
-std::string quoted(const std::filesystem::path& p) {
-    std::string q(1, '\'');
-    q += p.string();
-    q += '\'';
-    return q;
-}
+std::string quoted(const std::filesystem::path& p) { return gnuplotQuoted(p); }
 
 // The chart's y value: the headline error, or tunnels for the bullet (counts, linear axis).
 double chartError(const Row& r) { return r.metrics.tunnels >= 0 ? r.metrics.tunnels : r.metrics.error; }
 
 } // namespace
+
+// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string.
+std::string gnuplotQuoted(const std::filesystem::path& p) {
+    std::string q(1, '\'');
+    q += p.string();
+    q += '\'';
+    return q;
+}
 
 std::string drawChart(std::span<const Row> rows, const std::vector<std::string>& sceneOrder,
                       const std::filesystem::path& workDir, const std::filesystem::path& png) {
@@ -37,9 +39,11 @@ std::string drawChart(std::span<const Row> rows, const std::vector<std::string>&
 
     const std::filesystem::path script = workDir / "chart.gp";
     std::ofstream gp(script);
-    gp << "set terminal pngcairo size 1500,950 font ',10'\n"
+    // Two rows of panels, each panel about 480 pixels wide however many scenes there are.
+    const std::size_t columns = (sceneOrder.size() + 1) / 2;
+    gp << "set terminal pngcairo size " << std::max<std::size_t>(1500, 480 * columns) << ",950 font ',10'\n"
        << "set output " << quoted(png) << "\n"
-       << "set multiplot layout 2," << (sceneOrder.size() + 1) / 2
+       << "set multiplot layout 2," << columns
        << " title 'rube: error against cost (rube methods over dt = 1/30 .. 1/240 s; peers at 1/60 s)'\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top right font ',8'\n"
        << "set xlabel 'ms of CPU per simulated second'\n";

@@ -10,6 +10,9 @@
 
 namespace bench {
 
+/// A path in gnuplot's single quotes.
+std::string gnuplotQuoted(const std::filesystem::path& p);
+
 /// Writes the data files and gnuplot script into `workDir` and runs gnuplot to draw `png`.
 /// Returns an empty string on success, or why there is no chart (gnuplot missing, failed).
 std::string drawChart(std::span<const Row> rows, const std::vector<std::string>& sceneOrder,

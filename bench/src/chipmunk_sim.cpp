@@ -64,7 +64,7 @@ public:
     BallState ball(int i) const override {
         const cpBody* b = balls_[static_cast<std::size_t>(i)];
         const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
-        return {{p.x, p.y}, {v.x, v.y}};
+        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b)};
     }
 
 private:

@@ -3,7 +3,9 @@
 
 #include "chart.hpp"
 #include "csv.hpp"
+#include "failure_sweep.hpp"
 #include "runner.hpp"
+#include "scaling_chart.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -19,33 +21,70 @@
 namespace {
 
 // The default CSV name: the machine and the date, so runs on other machines sit side by side.
-std::string resultsName() {
+std::string resultsName(const std::string& suffix) {
     char host[64] = "machine";
     gethostname(host, sizeof host - 1);
     const std::time_t now = std::time(nullptr);
     char date[16];
     std::strftime(date, sizeof date, "%Y-%m-%d", std::localtime(&now));
-    return std::string(date) + "-" + host + ".csv";
+    return std::string(date) + "-" + host + suffix + ".csv";
 }
 
 bool selected(const std::vector<std::string>& filter, const std::string& name) {
     return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
 }
 
+// --quick runs the scaling sweep's smallest point only: it checks that it runs, in a few seconds.
+constexpr int kQuickScalingBodies = 100;
+// The peers' cost grows past rube's (Box2D 2.4.1 takes about 9 s a run at 5000 balls): the full run
+// takes them to 5000 balls to stay under 5 minutes; --scaling takes every engine to 20,000.
+constexpr int kFullRunPeerScalingBodies = 5000;
+// A scaling run of 20,000 balls takes over 8 s on every engine; none of them can get stuck (each
+// step's work is bounded), so the sweep gives its runs longer before abandoning them.
+constexpr double kScalingRunLimit = 120.0;
+
+// The scaling sweep measures rube's solver (the method made for piles: the exact method takes over
+// 8 s a run on the 1000-ball pile already) against the peers, all at 60 Hz.
+bool runsInScaling(const bench::Engine& engine) {
+    return engine.kind == bench::EngineKind::peer || engine.name == "rube-solver";
+}
+
+// The failure table: every probe on every method, written as Markdown. Returns false if unwritable.
+bool writeFailures(const std::string& path, bool quick) {
+    const auto start = std::chrono::steady_clock::now();
+    const bench::failures::Sweep sweep = bench::failures::runSweep(quick);
+    if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream out(path);
+    bench::failures::writeMarkdown(out, sweep, quick ? "rube_bench --quick" : "rube_bench --failures");
+    out.close();
+    if (!out) {
+        std::cerr << "rube_bench: could not write " << path << '\n';
+        return false;
+    }
+    std::cerr << "rube_bench: wrote " << path << " in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"rube_bench: rube's time-step methods against Box2D 2.4.1 and Chipmunk 7.0.3, speed against accuracy"};
-    bool quick = false, list = false;
-    std::string csvPath, chartPath;
+    bool quick = false, list = false, failuresOnly = false, noScaling = false, scalingOnly = false;
+    std::string csvPath, chartPath, scalingChartPath, failuresPath;
     std::vector<std::string> sceneFilter, engineFilter;
     std::vector<int> rates;
     int repeats = 5;
     double runTimeLimit = 8.0;
     app.add_flag("--quick", quick, "tiny scenes, one repeat, two time steps: checks the bench runs, not its speed");
     app.add_flag("--list", list, "list the scenes and engines and exit");
-    app.add_option("--csv", csvPath, "results file (default: bench/results/<date>-<host>.csv; --quick: ./bench-quick.csv)");
+    app.add_option("--csv", csvPath, "results file (default: bench/results/<date>-<host>.csv, --scaling: <date>-<host>-scaling.csv; --quick: ./bench-quick.csv)");
     app.add_option("--chart", chartPath, "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none)");
+    app.add_option("--scaling-chart", scalingChartPath, "scaling chart PNG (default: screenshots/scaling.png; --quick: none)");
+    app.add_flag("--no-scaling", noScaling, "leave out the scaling sweep (pile-scaling-*)");
+    app.add_flag("--scaling", scalingOnly, "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
+    app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
+    app.add_option("--failures-md", failuresPath, "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
     app.add_option("--scene", sceneFilter, "run only these scenes (repeatable)");
     app.add_option("--engine", engineFilter, "run only these engines, e.g. rube-solver, box2d-2.4.1 (repeatable)");
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
@@ -62,9 +101,12 @@ int main(int argc, char** argv) {
     }
 
     const std::filesystem::path source = RUBE_SOURCE_DIR;
+    if (failuresPath.empty()) failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
+    if (failuresOnly) return writeFailures(failuresPath, quick) ? 0 : 1;
     if (rates.empty()) rates = quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
-    if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName()).string();
+    if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
     if (chartPath.empty() && !quick) chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
+    if (scalingChartPath.empty() && !quick) scalingChartPath = (source / "screenshots/scaling.png").string();
 
     bench::RunOptions options;
     options.size.quick = quick;
@@ -73,18 +115,29 @@ int main(int argc, char** argv) {
     options.runTimeLimit = runTimeLimit;
 
     std::vector<bench::Row> rows;
-    std::vector<std::string> sceneOrder;
+    std::vector<std::string> sceneOrder, scalingOrder;
     const auto start = std::chrono::steady_clock::now();
     for (const auto& scene : bench::scenes()) {
         if (!selected(sceneFilter, scene.name)) continue;
-        sceneOrder.push_back(scene.name);
+        const bool scaling = scene.scalingBodies > 0;
+        if (scaling ? noScaling || (quick && scene.scalingBodies > kQuickScalingBodies) : scalingOnly) continue;
+        (scaling ? scalingOrder : sceneOrder).push_back(scene.name);
+        bench::RunOptions sceneOptions = options;
+        if (scaling) sceneOptions.runTimeLimit = std::max(options.runTimeLimit, kScalingRunLimit);
         for (const auto& engine : engines) {
-            if (!selected(engineFilter, engine.name)) continue;
-            // Peers run at the 60 Hz step their users run them at: one point each on the chart.
-            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer ? std::vector<int>{60} : rates;
+            if (!selected(engineFilter, engine.name) || (scaling && !runsInScaling(engine))) continue;
+            if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly && scene.scalingBodies > kFullRunPeerScalingBodies) {
+                std::fprintf(stderr, "%-18s %-16s left out of the full run (cost): rube_bench --scaling runs it\n",
+                             scene.name.c_str(), engine.name.c_str());
+                continue;
+            }
+            // Peers run at the 60 Hz step their users run them at: one point each on the chart; the
+            // scaling sweep runs everything at 60 Hz, since it measures cost against N, not dt.
+            const std::vector<int> engineRates =
+                engine.kind == bench::EngineKind::peer || scaling ? std::vector<int>{60} : rates;
             for (const int rate : engineRates) {
-                const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, options);
-                std::fprintf(stderr, "%-12s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
+                const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
+                std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
                              engine.name.c_str(), rate, row.msPerStep, row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
                              row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                 rows.push_back(row);
@@ -104,9 +157,17 @@ int main(int argc, char** argv) {
     std::cerr << "rube_bench: wrote " << csvPath << " (" << rows.size() << " rows) in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
 
-    if (!chartPath.empty()) {
+    if (!chartPath.empty() && !sceneOrder.empty()) {
         const std::string why = bench::drawChart(rows, sceneOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", chartPath);
         std::cerr << "rube_bench: " << (why.empty() ? "drew " + chartPath : why) << '\n';
     }
+    if (!scalingChartPath.empty() && !scalingOrder.empty()) {
+        const std::string why = bench::drawScalingChart(rows, scalingOrder, std::filesystem::temp_directory_path() / "rube-bench-chart",
+                                                        scalingChartPath);
+        std::cerr << "rube_bench: " << (why.empty() ? "drew " + scalingChartPath : why) << '\n';
+    }
+    // The failure table is part of every full run (it takes about a second) unless scenes were picked.
+    if (sceneFilter.empty() && engineFilter.empty() && !scalingOnly && !writeFailures(failuresPath, quick)) return 1;
+    std::cerr << "rube_bench: done in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
     return 0;
 }

@@ -41,7 +41,7 @@ public:
     int ballCount() const override { return static_cast<int>(world_.circles().size()); }
     BallState ball(int i) const override {
         const auto& c = world_.circles()[static_cast<std::size_t>(i)];
-        return {c.position, c.velocity};
+        return {c.position, c.velocity, c.angularVelocity};
     }
     std::int64_t capsHit() const override { return world_.stats().capsHit; }
 

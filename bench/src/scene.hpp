@@ -18,6 +18,7 @@ struct Metrics {
     double error2 = std::numeric_limits<double>::quiet_NaN(); ///< its second error, if it has one
     double overlap = std::numeric_limits<double>::quiet_NaN(); ///< largest overlap measured, m
     int tunnels = -1;                                          ///< balls that passed through a line
+    double momentum = std::numeric_limits<double>::quiet_NaN(); ///< relative momentum error, where a scene keeps momentum
 };
 
 /// Watches one measurement run: called after every step, never inside the timed loop.
@@ -46,6 +47,7 @@ struct Scene {
     rube::Vec2 boundsMin{-1e6, -1e6}, boundsMax{1e6, 1e6}; ///< a ball whose centre leaves them escaped
     std::function<void(Sim&, const SceneSize&)> build;
     std::function<std::unique_ptr<Probe>(const SceneSize&, double timeStep)> probe;
+    int scalingBodies = 0; ///< > 0: a point of the scaling sweep with this many bodies (rube's solver and the peers at 60 Hz, its own chart)
 };
 
 /// Every scene compiled in, in registration order (sorted by name when listed).

@@ -45,6 +45,7 @@ struct WorldSpec {
 struct BallState {
     Vec2 position{};
     Vec2 velocity{};
+    double angularVelocity = 0.0; ///< omega, rad/s, counter-clockwise (every engine here turns circles)
 };
 
 /// One engine instance running one scene. Implementations own their world.

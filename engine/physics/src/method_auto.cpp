@@ -90,7 +90,7 @@ private:
         const StepStats statsBefore = ctx.stats;
         WorldDef trialDef = ctx.def;
         trialDef.maxEventsPerStep = static_cast<int>(std::min<std::int64_t>(ctx.def.maxEventsPerStep, affordable));
-        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats};
+        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats};
         exact_->step(trial, dt);
         if (ctx.stats.capsHit == statsBefore.capsHit) return true;
         std::copy(circlesBefore_.begin(), circlesBefore_.end(), ctx.circles.begin());

@@ -15,6 +15,7 @@ struct StepContext {
     const WorldDef& def;
     std::span<Circle> circles;
     std::span<Segment> segments;
+    std::span<RigidBody> bodies;  ///< boxes and capsules (only the methods that model them move them)
     double time;                  ///< world time at the start of the step
     double restingSpeed;          ///< resolved from def.restingSpeed (never 0)
     std::vector<Impact>& impacts; ///< append every impact resolved, in order

@@ -74,6 +74,24 @@ int World::addSegment(const SegmentDef& d) {
     return static_cast<int>(segments_.size()) - 1;
 }
 
+int World::addBody(const RigidBodyDef& d) {
+    RigidBody b;
+    b.shape = d.shape;
+    b.position = d.position;
+    b.angle = d.fixedRotation ? 0.0 : d.angle;
+    b.halfExtents = d.halfExtents;
+    b.material = d.material;
+    b.motion = d.motion;
+    b.fixedRotation = d.fixedRotation;
+    const bool dynamic = d.motion == Motion::dynamic && d.mass > 0.0;
+    b.velocity = d.motion == Motion::fixed ? Vec2{} : d.velocity;
+    b.inverseMass = dynamic ? 1.0 / d.mass : 0.0;
+    b.inverseInertia = dynamic && !d.fixedRotation ? 1.0 / momentOfInertia(d.shape, d.halfExtents, d.mass) : 0.0;
+    b.angularVelocity = d.motion == Motion::fixed || d.fixedRotation ? 0.0 : d.angularVelocity;
+    bodies_.push_back(b);
+    return static_cast<int>(bodies_.size()) - 1;
+}
+
 int World::addPath(KinematicPath path) {
     paths_.push_back(std::move(path));
     return static_cast<int>(paths_.size()) - 1;
@@ -128,7 +146,7 @@ void World::step() {
     // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
-    StepContext context{def_, circles_, segments_, time_, resting, impacts_, stats_};
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_};
     // Model no more than a scene needs: a world without ropes never enters either rope pass.
     const bool hasRopes = !ropes_.empty();
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);

@@ -3,6 +3,7 @@
 
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
+#include "rube/physics/rigid_body.hpp"
 #include "rube/physics/rope.hpp"
 
 #include <cstdint>
@@ -88,6 +89,8 @@ public:
     int addCircle(const CircleDef& def);
     /// Adds a segment and returns its index.
     int addSegment(const SegmentDef& def);
+    /// Adds a rigid body (box or capsule) and returns its index.
+    int addBody(const RigidBodyDef& def);
     /// Adds a scripted path for kinematic bodies and returns its index.
     int addPath(KinematicPath path);
     /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its index;
@@ -115,6 +118,8 @@ public:
     std::span<const Circle> circles() const { return circles_; }
     std::span<Segment> segments() { return segments_; }
     std::span<const Segment> segments() const { return segments_; }
+    std::span<RigidBody> bodies() { return bodies_; }
+    std::span<const RigidBody> bodies() const { return bodies_; }
     std::span<const KinematicPath> paths() const { return paths_; }
     std::span<const Rope> ropes() const { return ropes_; }
 
@@ -125,6 +130,7 @@ private:
     WorldDef def_;
     std::vector<Circle> circles_;
     std::vector<Segment> segments_;
+    std::vector<RigidBody> bodies_;
     std::vector<KinematicPath> paths_;
     std::vector<Rope> ropes_;
     std::vector<RopeStart> ropeStarts_; ///< per rope, refilled before each step that has ropes

@@ -3,6 +3,7 @@
 // drawn at a floor, and the panel says so.
 
 #include "chart.hpp"
+#include "front.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,12 +14,7 @@
 namespace bench {
 namespace {
 
-constexpr double kErrorFloor = 1e-13;
-
 std::string quoted(const std::filesystem::path& p) { return gnuplotQuoted(p); }
-
-// The chart's y value: the headline error, or tunnels for the bullet (counts, linear axis).
-double chartError(const Row& r) { return r.metrics.tunnels >= 0 ? r.metrics.tunnels : r.metrics.error; }
 
 } // namespace
 
@@ -44,7 +40,7 @@ std::string drawChart(std::span<const Row> rows, const std::vector<std::string>&
     gp << "set terminal pngcairo size " << std::max<std::size_t>(1500, 480 * columns) << ",950 font ',10'\n"
        << "set output " << quoted(png) << "\n"
        << "set multiplot layout 2," << columns
-       << " title 'rube: error against cost (rube methods over dt = 1/30 .. 1/240 s; peers at 1/60 s)'\n"
+       << " title 'rube: error against cost (rube methods over dt = 1/30 .. 1/240 s, auto drawn thick; peers at 1/60 s)'\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top right font ',8'\n"
        << "set xlabel 'ms of CPU per simulated second'\n";
 
@@ -77,7 +73,9 @@ std::string drawChart(std::span<const Row> rows, const std::vector<std::string>&
             for (const Row* r : list)
                 out << r->msPerSimSecond << ' ' << (logAxis ? std::max(chartError(*r), kErrorFloor) : chartError(*r)) << '\n';
             if (!plot.empty()) plot += ", ";
-            plot += quoted(data) + " using 1:2 with " + (key.first ? "points pointsize 2" : "linespoints") +
+            // auto is drawn thick: the chart shows where it lies against the other methods.
+            const bool isAuto = key.second == "rube-auto";
+            plot += quoted(data) + " using 1:2 with " + (key.first ? "points pointsize 2" : isAuto ? "linespoints linewidth 3" : "linespoints") +
                     " linetype " + colour(key.second) + " title '" + key.second + "'";
         }
         gp << (plot.empty() ? "plot 1/0 notitle" : "plot " + plot) << "\n";

@@ -4,6 +4,7 @@
 #include "chart.hpp"
 #include "csv.hpp"
 #include "failure_sweep.hpp"
+#include "front.hpp"
 #include "runner.hpp"
 #include "scaling_chart.hpp"
 
@@ -71,7 +72,7 @@ bool writeFailures(const std::string& path, bool quick) {
 int main(int argc, char** argv) {
     CLI::App app{"rube_bench: rube's time-step methods against Box2D 2.4.1 and Chipmunk 7.0.3, speed against accuracy"};
     bool quick = false, list = false, failuresOnly = false, noScaling = false, scalingOnly = false;
-    std::string csvPath, chartPath, scalingChartPath, failuresPath;
+    std::string csvPath, chartPath, scalingChartPath, failuresPath, frontPath;
     std::vector<std::string> sceneFilter, engineFilter;
     std::vector<int> rates;
     int repeats = 5;
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
     app.add_flag("--scaling", scalingOnly, "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
     app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
     app.add_option("--failures-md", failuresPath, "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
+    app.add_option("--front-md", frontPath, "where auto stands against the other methods and peers, per scene and step (default: bench/results/auto-front.md; --quick: ./auto-front-quick.md)");
     app.add_option("--scene", sceneFilter, "run only these scenes (repeatable)");
     app.add_option("--engine", engineFilter, "run only these engines, e.g. rube-solver, box2d-2.4.1 (repeatable)");
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
@@ -102,6 +104,7 @@ int main(int argc, char** argv) {
 
     const std::filesystem::path source = RUBE_SOURCE_DIR;
     if (failuresPath.empty()) failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
+    if (frontPath.empty()) frontPath = quick ? "auto-front-quick.md" : (source / "bench/results/auto-front.md").string();
     if (failuresOnly) return writeFailures(failuresPath, quick) ? 0 : 1;
     if (rates.empty()) rates = quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
     if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
@@ -156,6 +159,18 @@ int main(int argc, char** argv) {
     }
     std::cerr << "rube_bench: wrote " << csvPath << " (" << rows.size() << " rows) in "
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+
+    // Where auto stands: written whenever auto ran, so a reader sees every step it was beaten, if any.
+    const std::vector<bench::AutoVerdict> verdicts = bench::judgeAuto(rows, sceneOrder);
+    if (!verdicts.empty()) {
+        if (std::filesystem::path(frontPath).has_parent_path())
+            std::filesystem::create_directories(std::filesystem::path(frontPath).parent_path());
+        std::ofstream front(frontPath);
+        bench::writeAutoTable(front, verdicts);
+        const auto beaten = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.beatenBy.empty(); });
+        std::cerr << "rube_bench: auto is on the front at " << verdicts.size() - static_cast<std::size_t>(beaten) << " of "
+                  << verdicts.size() << " scene steps; wrote " << frontPath << '\n';
+    }
 
     if (!chartPath.empty() && !sceneOrder.empty()) {
         const std::string why = bench::drawChart(rows, sceneOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", chartPath);

@@ -65,7 +65,8 @@ Engine rubeEngine(rube::Method method, int order) {
 [[maybe_unused]] const bool registered = registerEngine(rubeEngine(rube::Method::discrete, 0)) &&
                                          registerEngine(rubeEngine(rube::Method::turnBased, 1)) &&
                                          registerEngine(rubeEngine(rube::Method::exact, 2)) &&
-                                         registerEngine(rubeEngine(rube::Method::solver, 3));
+                                         registerEngine(rubeEngine(rube::Method::solver, 3)) &&
+                                         registerEngine(rubeEngine(rube::Method::automatic, 4));
 
 } // namespace
 } // namespace bench

@@ -36,15 +36,18 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
 namespace {
 
 template <bool Friction>
-void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies, const FrictionState* friction) {
+void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies,
+                    const double* inverseMass, const FrictionState* friction) {
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const ContactConstraint& c = contacts[k];
+        const double invMassA = inverseMass[c.a], invMassB = inverseMass[c.b];
         const Vec2 p = c.normal * c.impulse;
-        bodies[c.a].velocity += p * c.invMassA;
-        bodies[c.b].velocity -= p * c.invMassB;
+        bodies[c.a].velocity += p * invMassA;
+        bodies[c.b].velocity -= p * invMassB;
         if constexpr (Friction) {
             const FrictionTerms& f = friction->terms[k];
-            if (f.friction > 0.0) applyFriction(c, f, f.impulse, bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
+            if (f.friction > 0.0)
+                applyFriction(c, f, f.impulse, invMassA, invMassB, bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }
@@ -52,9 +55,9 @@ void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<Solve
 } // namespace
 
 void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies,
-                       const FrictionState* friction) {
-    if (friction) warmStartSweep<true>(contacts, bodies, friction);
-    else warmStartSweep<false>(contacts, bodies, nullptr);
+                       std::span<const double> inverseMass, const FrictionState* friction) {
+    if (friction) warmStartSweep<true>(contacts, bodies, inverseMass.data(), friction);
+    else warmStartSweep<false>(contacts, bodies, inverseMass.data(), nullptr);
 }
 
 namespace {
@@ -62,18 +65,19 @@ namespace {
 /// The soft sweep, with or without friction: one template so the frictionless loop carries no test.
 template <bool Friction>
 void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
-                const Softness (&softness)[2], double h, int substep, double maxPushSpeed, const FrictionState* friction) {
+                const double* inverseMass, const Softness (&softness)[2], double h, int substep, double maxPushSpeed, const FrictionState* friction) {
     const double invH = 1.0 / h;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         ContactConstraint& c = contacts[k];
         SolverBody& a = bodies[c.a];
         SolverBody& b = bodies[c.b];
+        const double invMassA = inverseMass[c.a], invMassB = inverseMass[c.b];
         // The current gap from the start gap and the relative displacement along the fixed normal.
         const double s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
         const double vn = c.normal.dot(a.velocity - b.velocity);
         // Speculative (s > 0): closing by at most the gap this substep is allowed, vn >= -s / h, rigidly.
         // Overlapping: a soft push-out at the spring's bias rate, capped at maxPushSpeed.
-        const Softness& soft = softness[c.invMassB == 0.0 ? 1 : 0];
+        const Softness& soft = softness[invMassB == 0.0 ? 1 : 0];
         const bool speculative = s > 0.0;
         const double bias = speculative ? s * invH : std::max(soft.biasRate * s, -maxPushSpeed);
         const double massScale = speculative ? 1.0 : soft.massScale;
@@ -84,13 +88,13 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         const double previous = c.impulse;
         const Vec2 p = c.normal * (total - previous);
         c.impulse = total;
-        a.velocity += p * c.invMassA;
-        b.velocity -= p * c.invMassB;
+        a.velocity += p * invMassA;
+        b.velocity -= p * invMassB;
         // Starting to push from zero: the cold record is only touched on this rare transition.
         if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
         if constexpr (Friction) {
             FrictionTerms& f = friction->terms[k];
-            if (f.friction > 0.0) solveFriction(c, f, a, b, friction->omega[c.a], friction->omega[c.b]);
+            if (f.friction > 0.0) solveFriction(c, f, invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }
@@ -98,10 +102,10 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
 } // namespace
 
 void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
-                   double maxPushSpeed, const FrictionState* friction) {
-    if (friction) solveSweep<true>(contacts, records, bodies, softness, h, substep, maxPushSpeed, friction);
-    else solveSweep<false>(contacts, records, bodies, softness, h, substep, maxPushSpeed, nullptr);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2], double h,
+                   int substep, double maxPushSpeed, const FrictionState* friction) {
+    if (friction) solveSweep<true>(contacts, records, bodies, inverseMass.data(), softness, h, substep, maxPushSpeed, friction);
+    else solveSweep<false>(contacts, records, bodies, inverseMass.data(), softness, h, substep, maxPushSpeed, nullptr);
 }
 
 namespace {
@@ -110,13 +114,14 @@ namespace {
 /// stored) or read back from the first pass of this substep. Same arithmetic either way.
 template <bool Measure>
 void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                std::span<SolverBody> bodies, double* gaps, double h, int substep) {
+                std::span<SolverBody> bodies, const double* inverseMass, double* gaps, double h, int substep) {
     const double invH = 1.0 / h;
     const std::size_t n = contacts.size();
     for (std::size_t k = 0; k < n; ++k) {
         ContactConstraint& c = contacts[k];
         SolverBody& a = bodies[c.a];
         SolverBody& b = bodies[c.b];
+        const double invMassA = inverseMass[c.a], invMassB = inverseMass[c.b];
         double s;
         if constexpr (Measure) {
             s = c.baseSeparation + c.normal.dot(a.displacement - b.displacement);
@@ -131,8 +136,8 @@ void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         const double previous = c.impulse;
         const Vec2 p = c.normal * (total - previous);
         c.impulse = total;
-        a.velocity += p * c.invMassA;
-        b.velocity -= p * c.invMassB;
+        a.velocity += p * invMassA;
+        b.velocity -= p * invMassB;
         // A speculative contact may first catch its circle here, after the substep's move.
         if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
     }
@@ -141,13 +146,14 @@ void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
 } // namespace
 
 void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<double> gaps, bool measureGaps, double h, int substep) {
-    if (measureGaps) relaxSweep<true>(contacts, records, bodies, gaps.data(), h, substep);
-    else relaxSweep<false>(contacts, records, bodies, gaps.data(), h, substep);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps, bool measureGaps,
+                   double h, int substep) {
+    if (measureGaps) relaxSweep<true>(contacts, records, bodies, inverseMass.data(), gaps.data(), h, substep);
+    else relaxSweep<false>(contacts, records, bodies, inverseMass.data(), gaps.data(), h, substep);
 }
 
 void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
-                      std::span<SolverBody> bodies, double threshold, Vec2 gravityStep) {
+                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold, Vec2 gravityStep) {
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const ContactConstraint& c = contacts[k];
         const ContactRecord& r = records[k];
@@ -159,14 +165,15 @@ void applyRestitution(std::span<const ContactConstraint> contacts, std::span<con
         // Semi-implicit Euler conserves H = v^2/2 + g.x - (h/2) g.v in flight, not the energy; a bounce
         // flips v and so would lose h |v| of apex height each time. Reflecting u + |g.n| h instead of
         // u restores H exactly for C = 1. Two dynamic circles fall alike: no correction between them.
-        const double gravityInto = c.invMassB > 0.0 ? 0.0 : std::max(-gravityStep.dot(c.normal), 0.0);
+        const double invMassA = inverseMass[static_cast<std::size_t>(c.a)], invMassB = inverseMass[static_cast<std::size_t>(c.b)];
+        const double gravityInto = invMassB > 0.0 ? 0.0 : std::max(-gravityStep.dot(c.normal), 0.0);
         const double target = r.bounciness * (r.approachSpeed + gravityInto);
         // lambda = -m (vn - target), clamped so the accumulated impulse stays >= 0.
         const double delta = -c.normalMass * (vn - target);
         const double applied = std::max(c.impulse + delta, 0.0) - c.impulse;
         const Vec2 p = c.normal * applied;
-        a.velocity += p * c.invMassA;
-        b.velocity -= p * c.invMassB;
+        a.velocity += p * invMassA;
+        b.velocity -= p * invMassB;
     }
 }
 

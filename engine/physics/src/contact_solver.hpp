@@ -31,15 +31,15 @@ struct Softness {
 Softness makeSoftness(double hertz, double dampingRatio, double h);
 
 /// One contact between dynamic circle `a` and body `b` (circle or segment), the hot data the
-/// substeps touch: one cache line each, in the order the solver sweeps them.
-struct alignas(64) ContactConstraint {
+/// substeps touch, in the order the solver sweeps them. 48 bytes: the sweeps stream every contact
+/// 32 times a step, so a 20,000-ball pile's contacts must stay small (the bodies' inverse masses are
+/// read from a per-body array instead, which stays in cache).
+struct alignas(16) ContactConstraint {
     int a = 0;                   ///< solver body index of the dynamic circle
     int b = 0;                   ///< solver body index of the other body (circles first, then segments)
     Vec2 normal;                 ///< unit, from b towards a, fixed for the step
     double baseSeparation = 0.0; ///< surface gap at the start of the step (negative: overlap)
-    double invMassA = 0.0;       ///< 1 / mass of the circle
-    double invMassB = 0.0;       ///< 0 for kinematic and static bodies (lecture 3: infinite mass)
-    double normalMass = 0.0;     ///< 1 / (invMassA + invMassB), the pair's effective mass along n
+    double normalMass = 0.0;     ///< 1 / (1/mA + 1/mB), the pair's effective mass along n (1/m = 0: infinite mass, lecture 3)
     double impulse = 0.0;        ///< accumulated normal impulse of the current substep (>= 0)
 };
 
@@ -58,15 +58,16 @@ struct FrictionState;
 /// Applies last substep's impulses again as the starting guess: v += M^-1 n lambda (warm starting),
 /// and the friction impulses too when `friction` is given.
 void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<SolverBody> bodies,
-                       const FrictionState* friction = nullptr);
+                       std::span<const double> inverseMass, const FrictionState* friction = nullptr);
 
+/// `inverseMass` is per solver body: 1/m of dynamic circles, 0 for every body of infinite mass.
 /// One Gauss-Seidel sweep with soft position feedback: overlap is pushed out softly, speculative
 /// contacts (gap s > 0) only forbid closing more than the gap within this substep, vn >= -s / h.
 /// softness[0] applies between two dynamic circles, softness[1] against infinite mass. Marks contacts
 /// that start pushing for the first time this step with `substep` and their approach speed.
 /// With `friction`, each contact's Coulomb friction is solved right after its normal impulse.
 void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, const Softness (&softness)[2], double h, int substep,
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2], double h, int substep,
                    double maxPushSpeed, const FrictionState* friction = nullptr);
 
 /// One rigid Gauss-Seidel sweep without position feedback (relax): removes the push-out velocity
@@ -74,12 +75,12 @@ void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecor
 /// Positions do not move between the relax passes of a substep: the first pass (`gaps` to fill)
 /// measures every contact's gap into `gaps`, the later ones read it back.
 void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<double> gaps, bool measureGaps, double h, int substep);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps, bool measureGaps, double h, int substep);
 
 /// Restitution once per step for contacts that touched faster than `threshold`: the normal velocity
 /// becomes C times the approach speed (v' = u - C (v - u), lecture 3), the approach taken one substep
 /// of gravity later (`gravityStep` = g h) against infinite mass, so bounces keep their height.
 void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
-                      std::span<SolverBody> bodies, double threshold, Vec2 gravityStep);
+                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold, Vec2 gravityStep);
 
 } // namespace rube

@@ -203,7 +203,7 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
     }
     buildContacts(pairs_, ctx.circles, ctx.segments, margins_, inverseMass_, cache_, contacts_, records_);
     const Vec2 up = ctx.def.gravity.lengthSquared() > 0.0 ? -ctx.def.gravity.normalized() : Vec2{0.0, 1.0};
-    orderContacts(contacts_, records_, start_, up, grid_.cellSize(), orderScratch_);
+    orderContacts(contacts_, records_, start_, inverseMass_, up, grid_.cellSize(), orderScratch_);
     frictions_.clear();
     rotating_.clear();
     if (anyRotation_) findFriction(ctx);
@@ -213,7 +213,7 @@ void SolverMethod::findFriction(const StepContext& ctx) {
     const auto& circles = ctx.circles;
     const auto& segments = ctx.segments;
     // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
-    buildFriction(contacts_, circles, segments, [&](std::size_t k) {
+    buildFriction(contacts_, circles, segments, inverseMass_, [&](std::size_t k) {
         const ContactConstraint& c = contacts_[k];
         const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
                                                 : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
@@ -253,14 +253,14 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
-        warmStartContacts(contacts_, bodies_, friction);
-        solveContacts(contacts_, records_, bodies_, softness, h, k, kMaxPushSpeed, friction);
+        warmStartContacts(contacts_, bodies_, inverseMass_, friction);
+        solveContacts(contacts_, records_, bodies_, inverseMass_, softness, h, k, kMaxPushSpeed, friction);
         for (SolverBody& b : bodies_) b.displacement += b.velocity * h;
         for (std::size_t r = 0; r < rotating_.size(); ++r) turn_[r] += omega_[static_cast<std::size_t>(rotating_[r])] * h;
-        for (int r = 0; r < relaxIterations; ++r) relaxContacts(contacts_, records_, bodies_, gaps_, r == 0, h, k);
+        for (int r = 0; r < relaxIterations; ++r) relaxContacts(contacts_, records_, bodies_, inverseMass_, gaps_, r == 0, h, k);
     }
     cache_.store(contacts_, circleCount_, segmentCount_);
-    applyRestitution(contacts_, records_, bodies_, ctx.restingSpeed, gravityStep);
+    applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
 }
 
 void SolverMethod::finish(StepContext& ctx, double dt) {

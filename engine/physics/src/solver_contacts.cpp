@@ -99,8 +99,6 @@ void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle>
         c.b = pair.other;
         c.normal = g.normal;
         c.baseSeparation = g.gap;
-        c.invMassA = invA;
-        c.invMassB = invB;
         c.normalMass = 1.0 / (invA + invB);
         c.impulse = previous ? previous->impulse : 0.0;
         contacts.push_back(c);
@@ -115,7 +113,7 @@ void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle>
 }
 
 void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records,
-                   std::span<const Vec2> positions, Vec2 up, double layerHeight, ContactOrderScratch& scratch) {
+                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight, ContactOrderScratch& scratch) {
     const std::size_t n = contacts.size();
     if (n == 0) return;
     const int circleCount = static_cast<int>(positions.size());
@@ -140,7 +138,7 @@ void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<Contact
     scratch.key.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const ContactConstraint& c = contacts[k];
-        const bool dynamicPair = c.b < circleCount && c.invMassB > 0.0;
+        const bool dynamicPair = c.b < circleCount && inverseMass[static_cast<std::size_t>(c.b)] > 0.0;
         const double height = dynamicPair ? 0.5 * (positions[c.a].dot(up) + positions[c.b].dot(up)) : positions[c.a].dot(up);
         const int layer = std::clamp(static_cast<int>((height - lo) * perLayer), 0, layerCount - 1);
         const int fromTop = layerCount - 1 - layer + (dynamicPair ? 0 : layerCount);

@@ -58,7 +58,7 @@ struct ContactOrderScratch {
 /// push a ball through it. Within a layer every circle's first contact comes before any circle's
 /// second, so consecutive contacts rarely share a body and the CPU overlaps their work.
 void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records,
-                   std::span<const Vec2> positions, Vec2 up, double layerHeight, ContactOrderScratch& scratch);
+                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight, ContactOrderScratch& scratch);
 
 /// Appends an Impact for every contact that first touched faster than ctx.restingSpeed and counts
 /// the slower touches as resting contacts; returns the number of impacts. Circles hold the step's end

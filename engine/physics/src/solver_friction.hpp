@@ -39,7 +39,8 @@ struct FrictionState {
 /// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1).
 template <class FrictionOf>
 void buildFriction(std::span<const ContactConstraint> contacts, std::span<const Circle> circles,
-                   std::span<const Segment> segments, FrictionOf friction, std::vector<FrictionTerms>& out) {
+                   std::span<const Segment> segments, std::span<const double> inverseMass, FrictionOf friction,
+                   std::vector<FrictionTerms>& out) {
     out.assign(contacts.size(), FrictionTerms{});
     const int circleCount = static_cast<int>(circles.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -57,32 +58,32 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
         } else if (const Segment& s = segments[static_cast<std::size_t>(c.b - circleCount)]; s.surfaceSpeed != 0.0) {
             f.surfaceVelocityB = (s.b - s.a).normalized() * s.surfaceSpeed;
         }
-        const double kt = c.invMassA + c.invMassB + f.armA * f.armA * f.inverseInertiaA + f.armB * f.armB * f.inverseInertiaB;
+        const double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] + f.armA * f.armA * f.inverseInertiaA + f.armB * f.armB * f.inverseInertiaB;
         f.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         f.friction = mu;
     }
 }
 
 /// Applies a tangential impulse lambda t at the contact: on a, and its opposite on b.
-inline void applyFriction(const ContactConstraint& c, const FrictionTerms& f, double lambda, SolverBody& a, SolverBody& b,
-                          double& omegaA, double& omegaB) {
+inline void applyFriction(const ContactConstraint& c, const FrictionTerms& f, double lambda, double invMassA, double invMassB,
+                          SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
     const Vec2 p = c.normal.perpendicular() * lambda;
-    a.velocity += p * c.invMassA;
-    b.velocity -= p * c.invMassB;
+    a.velocity += p * invMassA;
+    b.velocity -= p * invMassB;
     omegaA -= f.inverseInertiaA * f.armA * lambda;
     omegaB -= f.inverseInertiaB * f.armB * lambda;
 }
 
 /// One friction update at a contact: drives the slip speed to zero within the Coulomb cone
 /// |lambda_t| <= mu lambda_n, using the contact's normal impulse as it stands now.
-inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, SolverBody& a, SolverBody& b, double& omegaA,
-                          double& omegaB) {
+inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, double invMassA, double invMassB, SolverBody& a,
+                          SolverBody& b, double& omegaA, double& omegaB) {
     const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - f.surfaceVelocityB) - f.armA * omegaA - f.armB * omegaB;
     const double limit = f.friction * c.impulse;
     const double total = std::clamp(f.impulse - f.tangentMass * vt, -limit, limit);
     const double delta = total - f.impulse;
     f.impulse = total;
-    applyFriction(c, f, delta, a, b, omegaA, omegaB);
+    applyFriction(c, f, delta, invMassA, invMassB, a, b, omegaA, omegaB);
 }
 
 } // namespace rube

@@ -22,10 +22,10 @@ using rube::World;
 constexpr double kGravity = 9.81;
 constexpr double kRadius = 0.1; // stack, mass-ratio and bounciness probes
 
-World makeWorld(Method method, double gravity) {
+World makeWorld(Method method, double gravity, double timeStep = kTimeStep) {
     rube::WorldDef def; // the rest as a level gets it: event cap 4096, resting speed 2 |g| dt + 1 mm/s, 8 substeps
     def.method = method;
-    def.timeStep = kTimeStep;
+    def.timeStep = timeStep;
     def.gravity = {0.0, -gravity};
     return World(def);
 }
@@ -140,11 +140,11 @@ Outcome speedProbe(Method method, double travelPerRadius, int phases) {
     return worst;
 }
 
-Outcome stackProbe(Method method, int height) {
-    World world = makeWorld(method, kGravity);
+Outcome stackProbe(Method method, int height, double timeStep) {
+    World world = makeWorld(method, kGravity, timeStep);
     addFloor(world);
     for (int i = 0; i < height; ++i) addBall(world, {0.0, kRadius + 2.0 * kRadius * i}, {}, kRadius, 1.0, 0.0);
-    return watch(world, static_cast<int>(std::lround(2.0 / kTimeStep)), columnBroken, false);
+    return watch(world, static_cast<int>(std::lround(2.0 / timeStep)), columnBroken, false);
 }
 
 Outcome massRatioProbe(Method method, double ratio) {

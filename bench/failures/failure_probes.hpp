@@ -39,8 +39,8 @@ inline constexpr double kTimeStep = 1.0 / 60;
 Outcome speedProbe(rube::Method method, double travelPerRadius, int phases = 1000);
 
 /// A column of `height` balls (r = 0.1 m, 1 kg, C = 0) standing on a floor, each touching the one
-/// beneath, under gravity for 2 s.
-Outcome stackProbe(rube::Method method, int height);
+/// beneath, under gravity for 2 s, at `timeStep` s a step.
+Outcome stackProbe(rube::Method method, int height, double timeStep = kTimeStep);
 
 /// A ball `ratio` times heavier resting on a 1 kg ball on a floor (r = 0.1 m, C = 0), under gravity for 2 s.
 Outcome massRatioProbe(rube::Method method, double ratio);

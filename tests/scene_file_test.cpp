@@ -47,7 +47,7 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
     const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "float", "newtons-cradle",
-                                            "pendulum", "pile", "pool-break", "projectile", "rolling", "slope-rest"};
+                                            "pendulum", "pile", "pool-break", "projectile", "rolling", "seesaw-domino", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;

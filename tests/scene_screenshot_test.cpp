@@ -44,6 +44,7 @@ constexpr Golden kGoldens[] = {
     {"pool-break", 20, true, true},      // t = 0.33 s: the break
     {"projectile", 90, true, false},     // t = 1.5 s: past the top of the parabola
     {"rolling", 90, true, false},        // t = 1.5 s: the slider ahead, the disc, the ring behind; spokes turned
+    {"seesaw-domino", 90, false, false}, // t = 1.5 s: the seesaw down, the box in flight, the dominoes fallen
     {"slope-rest", 60, true, true},      // t = 1 s: sliding, pressed onto the slope
 };
 
@@ -110,4 +111,5 @@ TEST_CASE("pile matches its golden frames", "[screenshot][scene]") { checkGolden
 TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { checkGoldens("pool-break"); }
 TEST_CASE("projectile matches its golden frames", "[screenshot][scene]") { checkGoldens("projectile"); }
 TEST_CASE("rolling matches its golden frames", "[screenshot][scene]") { checkGoldens("rolling"); }
+TEST_CASE("seesaw-domino matches its golden frames", "[screenshot][scene]") { checkGoldens("seesaw-domino"); }
 TEST_CASE("slope-rest matches its golden frames", "[screenshot][scene]") { checkGoldens("slope-rest"); }

@@ -31,6 +31,8 @@ World buildWorld(const SceneDesc& scene) {
     for (const CircleDef& circle : scene.circles) world.addCircle(circle);
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
     for (const RopeDef& rope : scene.ropes) world.addRope(rope);
+    for (const RigidBodyDef& body : scene.bodies) world.addBody(body);
+    for (const PivotDef& pivot : scene.pivots) world.addPivot(pivot);
     world.fields().waters = scene.waters;
     return world;
 }

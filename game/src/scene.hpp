@@ -34,6 +34,8 @@ struct SceneDesc {
     std::vector<Water> waters;      ///< [[water]] pools, in file order
     std::vector<RopeDef> ropes;     ///< [[rope]] in file order: index i is the World's rope i
     std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
+    std::vector<RigidBodyDef> bodies; ///< every [[box]], then every [[capsule]]: index i is the World's body i
+    std::vector<PivotDef> pivots;     ///< [[pivot]] in file order
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.

@@ -9,7 +9,7 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water", "rope"};
+constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water", "rope", "box", "capsule", "pivot"};
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 // The level's tables: accepted everywhere, but not offered in a physics scene's key list.
 constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
@@ -211,12 +211,22 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     readCircleGrids(root, reading);
     readSegments(root, reading);
     readRopes(root, reading);
+    readRigidBodies(root, reading);
     readLevel(root, reading);
-    if (!diag.empty()) return {std::nullopt, diag.sorted()};
     // A level that names no method gets "auto", the cheapest that holds for what it does; a
     // physics scene keeps the exact method, the course's reference, unless it names another.
+    // Bodies that turn need the solver: a scene with some gets "auto" too, and naming a method
+    // that cannot move them is an error at the name.
     const toml::table* world = document["world"].as_table();
-    if (scene.level.isLevel() && !(world && world->contains("method"))) scene.world.method = Method::automatic;
+    const bool namesMethod = world && world->contains("method");
+    const bool rotating = needsRotatingSolver(scene);
+    if (rotating && namesMethod && scene.world.method != Method::solver && scene.world.method != Method::automatic) {
+        TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
+        worldTable.error(worldTable.valuePlace("method"), "method '" + std::string(methodName(scene.world.method)) +
+                                                              "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
+    }
+    if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    if ((scene.level.isLevel() || rotating) && !namesMethod) scene.world.method = Method::automatic;
     return {std::move(scene), {}};
 }
 

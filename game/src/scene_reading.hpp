@@ -27,6 +27,11 @@ void readSegments(TableReader& root, SceneReading& reading);
 /// Reads every [[rope]] of the file into scene.ropes (after the circles, which ropes name).
 void readRopes(TableReader& root, SceneReading& reading);
 
+/// Reads every [[box]], then every [[capsule]] into scene.bodies, then every [[pivot]] into scene.pivots.
+void readRigidBodies(TableReader& root, SceneReading& reading);
+/// True when the scene has bodies only the solver moves: turning boxes, capsules or pivots.
+bool needsRotatingSolver(const SceneDesc& scene);
+
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.
 void readLevel(TableReader& root, SceneReading& reading);
 

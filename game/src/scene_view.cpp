@@ -91,6 +91,20 @@ void drawRopes(const World& world, render::DrawList& list) {
     }
 }
 
+void drawRigidBodies(const World& world, render::DrawList& list) {
+    for (const RigidBody& b : world.bodies()) {
+        const Style style = styleFor(b.motion, kSmallOutlineWidth);
+        const Vec2 axis{std::cos(b.angle), std::sin(b.angle)};
+        const Vec2 a = b.position - axis * b.halfExtents.x, e = b.position + axis * b.halfExtents.x;
+        if (b.shape == BodyShape::box) list.box(toPoint(b.position), toPoint(b.halfExtents), static_cast<float>(b.angle), style);
+        else list.capsule(toPoint(a), toPoint(e), static_cast<float>(b.halfExtents.y), style);
+        // A line from the centre along the body's own x axis: turning reads at a glance.
+        list.line(toPoint(b.position), toPoint(e), kRopeWidth, style.outline);
+    }
+    for (const Pivot& pivot : world.pivots())
+        list.circle(toPoint(pivot.worldAnchor), kRopePinRadius, styleFor(Motion::fixed, kSmallOutlineWidth));
+}
+
 void SceneView::drawSegments(const World& world, render::DrawList& list) const {
     for (const Segment& s : world.segments()) {
         const bool thin = s.radius * camera_.pixelsPerMetre(frame_) < 0.5 * kThinLineWidth;
@@ -133,6 +147,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     // Back to front: walls, then where balls have been, the balls, and the debug marks on top.
     drawSegments(world, list);
     drawRopes(world, list);
+    drawRigidBodies(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.

@@ -18,6 +18,8 @@ namespace rube::game {
 /// Draws every uncut rope of `world` as a line from its anchor (with a small pin) or other circle
 /// to its ball's centre; drawn before the balls, so the line meets each ball at its rim.
 void drawRopes(const World& world, render::DrawList& list);
+/// Draws every box (a turned rectangle) and capsule with a line along its own x axis, and every pivot's pin.
+void drawRigidBodies(const World& world, render::DrawList& list);
 
 /// What a view draws besides the bodies; a caller changes only what it needs.
 struct ViewOptions {

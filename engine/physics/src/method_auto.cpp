@@ -36,7 +36,7 @@ public:
 
     void step(StepContext& ctx, double dt) override {
         const std::int64_t affordable = affordableEvents(ctx);
-        const bool solverNow = solverStepsLeft_ > 0 || affordable < kFewestEvents || frictionPair(ctx);
+        const bool solverNow = solverStepsLeft_ > 0 || affordable < kFewestEvents || frictionPair(ctx) || turningBodies(ctx);
         if (!solverNow && tryExact(ctx, dt, affordable)) {
             usedSolver_ = false;
             stint_ = kFirstStint;
@@ -68,6 +68,13 @@ private:
         return kExactBudget / std::max<std::int64_t>(1, dynamic * shapes);
     }
 
+    // Bodies that turn (anything but lecture 3's fixed-rotation boxes) and pivots: only the solver models them.
+    static bool turningBodies(const StepContext& ctx) {
+        return !ctx.pivots.empty() || std::any_of(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) {
+            return b.shape != BodyShape::box || !b.fixedRotation;
+        });
+    }
+
     static bool frictionPair(const StepContext& ctx) {
         int dynamicWithFriction = 0;
         bool otherWithFriction = false;
@@ -90,7 +97,7 @@ private:
         const StepStats statsBefore = ctx.stats;
         WorldDef trialDef = ctx.def;
         trialDef.maxEventsPerStep = static_cast<int>(std::min<std::int64_t>(ctx.def.maxEventsPerStep, affordable));
-        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats};
+        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats, ctx.pivots};
         exact_->step(trial, dt);
         if (ctx.stats.capsHit == statsBefore.capsHit) return true;
         std::copy(circlesBefore_.begin(), circlesBefore_.end(), ctx.circles.begin());

@@ -3,6 +3,7 @@
 // once per step through a uniform grid, and a continuous sweep for circles faster than their margin.
 #include "broadphase_grid.hpp"
 #include "contact_solver.hpp"
+#include "rigid_stage.hpp"
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
 #include "solver_sweep.hpp"
@@ -100,6 +101,9 @@ private:
     BroadphaseGrid grid_;
     ContactCache cache_;
     ContinuousSweep sweep_;
+    // Rigid bodies (boxes, capsules) and pivots: only in steps whose world has some.
+    bool hasRigid_ = false;
+    RigidStage rigid_;
 };
 
 void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
@@ -204,6 +208,8 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
     buildContacts(pairs_, ctx.circles, ctx.segments, margins_, inverseMass_, cache_, contacts_, records_);
     const Vec2 up = ctx.def.gravity.lengthSquared() > 0.0 ? -ctx.def.gravity.normalized() : Vec2{0.0, 1.0};
     orderContacts(contacts_, records_, start_, inverseMass_, up, grid_.cellSize(), orderScratch_);
+    hasRigid_ = !ctx.bodies.empty();
+    if (hasRigid_) rigid_.prepare(ctx, dt);
     frictions_.clear();
     rotating_.clear();
     if (anyRotation_) findFriction(ctx);
@@ -233,6 +239,7 @@ void SolverMethod::findFriction(const StepContext& ctx) {
         list(contacts_[k].a);
         list(contacts_[k].b);
     }
+    if (hasRigid_) rigid_.listFrictionCircles(list);
     for (const int i : rotating_) omega_[static_cast<std::size_t>(i)] = circles[static_cast<std::size_t>(i)].angularVelocity;
     turn_.assign(rotating_.size(), 0.0);
 }
@@ -250,16 +257,25 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     // the push-out added, which friction does not depend on (and a third of the cost is saved).
     FrictionState frictionState{frictions_, omega_};
     const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
+    if (hasRigid_) rigid_.bind(bodies_, anyRotation_ ? std::span<double>(omega_) : std::span<double>{}, ctx.circles);
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
+        if (hasRigid_) rigid_.integrateVelocities(gravityStep);
+        if (hasRigid_) rigid_.warmStart();
         warmStartContacts(contacts_, bodies_, inverseMass_, friction);
+        if (hasRigid_) rigid_.solve(h, true);
         solveContacts(contacts_, records_, bodies_, inverseMass_, softness, h, k, kMaxPushSpeed, friction);
         for (SolverBody& b : bodies_) b.displacement += b.velocity * h;
         for (std::size_t r = 0; r < rotating_.size(); ++r) turn_[r] += omega_[static_cast<std::size_t>(rotating_[r])] * h;
-        for (int r = 0; r < relaxIterations; ++r) relaxContacts(contacts_, records_, bodies_, inverseMass_, gaps_, r == 0, h, k);
+        if (hasRigid_) rigid_.integratePositions(h);
+        for (int r = 0; r < relaxIterations; ++r) {
+            if (hasRigid_) rigid_.solve(h, false);
+            relaxContacts(contacts_, records_, bodies_, inverseMass_, gaps_, r == 0, h, k);
+        }
     }
     cache_.store(contacts_, circleCount_, segmentCount_);
+    if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
 }
 
@@ -273,6 +289,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
             c.position = start_[i] + c.velocity * dt; // straight along this step's velocity
         }
     }
+    if (hasRigid_) rigid_.finish(ctx);
     for (std::size_t r = 0; r < rotating_.size(); ++r) {
         Circle& c = ctx.circles[static_cast<std::size_t>(rotating_[r])];
         c.angularVelocity = omega_[static_cast<std::size_t>(rotating_[r])];

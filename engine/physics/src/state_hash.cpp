@@ -39,6 +39,14 @@ std::uint64_t stateHash(const World& world) {
         mix(h, s.b.x);
         mix(h, s.b.y);
     }
+    for (const RigidBody& b : world.bodies()) {
+        mix(h, b.position.x);
+        mix(h, b.position.y);
+        mix(h, b.velocity.x);
+        mix(h, b.velocity.y);
+        mix(h, b.angle);
+        mix(h, b.angularVelocity);
+    }
     return h;
 }
 

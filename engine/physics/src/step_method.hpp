@@ -20,6 +20,7 @@ struct StepContext {
     double restingSpeed;          ///< resolved from def.restingSpeed (never 0)
     std::vector<Impact>& impacts; ///< append every impact resolved, in order
     StepStats& stats;             ///< add impacts, resting contacts, caps hit; set maxEventsInStep
+    std::span<const Pivot> pivots = {}; ///< rigid bodies pinned to the world (the solver models them)
 };
 
 /// A time-step method: advances every body over dt.

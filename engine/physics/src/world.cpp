@@ -5,7 +5,9 @@
 #include "rope_constraint.hpp"
 #include "step_method.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <iterator>
 #include <stdexcept>
 
@@ -27,6 +29,18 @@ std::unique_ptr<StepMethod> makeMethod(Method method) {
 constexpr std::string_view kMethodNames[] = {"discrete", "turn-based", "exact", "solver", "auto"};
 
 } // namespace
+
+void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots) {
+    if (method == Method::solver || method == Method::automatic) return;
+    // Lecture 3's axis-aligned blocks (fixed-rotation boxes) are every method's; anything that turns
+    // needs the solver's rotation and contact manifolds, and is refused rather than silently ignored.
+    const bool turns = !pivots.empty() || std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) {
+        return b.shape != BodyShape::box || !b.fixedRotation;
+    });
+    if (turns)
+        throw std::logic_error("method '" + std::string(methodName(method)) +
+                               "' cannot move rotating rigid bodies, capsules or pivots: use method 'auto' or 'solver'");
+}
 
 std::string_view methodName(Method method) { return kMethodNames[static_cast<int>(method)]; }
 
@@ -92,6 +106,13 @@ int World::addBody(const RigidBodyDef& d) {
     return static_cast<int>(bodies_.size()) - 1;
 }
 
+int World::addPivot(const PivotDef& d) {
+    if (d.body < 0 || static_cast<std::size_t>(d.body) >= bodies_.size())
+        throw std::invalid_argument("a pivot must pin an existing rigid body");
+    pivots_.push_back(Pivot{d.body, d.localAnchor, d.worldAnchor});
+    return static_cast<int>(pivots_.size()) - 1;
+}
+
 int World::addPath(KinematicPath path) {
     paths_.push_back(std::move(path));
     return static_cast<int>(paths_.size()) - 1;
@@ -146,7 +167,8 @@ void World::step() {
     // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
-    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_};
+    if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_};
     // Model no more than a scene needs: a world without ropes never enters either rope pass.
     const bool hasRopes = !ropes_.empty();
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);

@@ -3,6 +3,7 @@
 
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
+#include "rube/physics/pivot.hpp"
 #include "rube/physics/rigid_body.hpp"
 #include "rube/physics/rope.hpp"
 
@@ -91,6 +92,9 @@ public:
     int addSegment(const SegmentDef& def);
     /// Adds a rigid body (box or capsule) and returns its index.
     int addBody(const RigidBodyDef& def);
+    /// Pins a rigid body to the world at a point, free to turn about it, and returns the pivot's index;
+    /// throws std::invalid_argument for a body index out of range.
+    int addPivot(const PivotDef& def);
     /// Adds a scripted path for kinematic bodies and returns its index.
     int addPath(KinematicPath path);
     /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its index;
@@ -103,7 +107,9 @@ public:
     Fields& fields() { return fields_; }
     const Fields& fields() const { return fields_; }
 
-    /// Advances the world by one time step with its method.
+    /// Advances the world by one time step with its method. Throws std::logic_error when the world has
+    /// rigid bodies that turn (not fixed-rotation boxes), capsules or pivots, and its method is one
+    /// that does not model them (discrete, turn-based, exact): only solver and auto do.
     void step();
     /// Switches the time-step method (for running any scene under every method).
     void setMethod(Method method);
@@ -122,6 +128,7 @@ public:
     std::span<const RigidBody> bodies() const { return bodies_; }
     std::span<const KinematicPath> paths() const { return paths_; }
     std::span<const Rope> ropes() const { return ropes_; }
+    std::span<const Pivot> pivots() const { return pivots_; }
 
 private:
     void moveKinematicBodies();
@@ -133,6 +140,7 @@ private:
     std::vector<RigidBody> bodies_;
     std::vector<KinematicPath> paths_;
     std::vector<Rope> ropes_;
+    std::vector<Pivot> pivots_;
     std::vector<RopeStart> ropeStarts_; ///< per rope, refilled before each step that has ropes
     Fields fields_;
     std::vector<Impact> impacts_;
@@ -141,6 +149,10 @@ private:
     StepStats stats_;
     double time_ = 0.0;
 };
+
+/// Throws std::logic_error unless `method` models these bodies and pivots: lecture 3's axis-aligned
+/// blocks (fixed-rotation boxes) suit every method; turning bodies, capsules and pivots need solver or auto.
+void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots);
 
 /// A 64-bit FNV-1a hash of every body's position and velocity bits: equal hashes mean
 /// bit-identical states (the determinism check, as Box2D's determinism test does).

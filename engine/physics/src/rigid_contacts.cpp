@@ -1,0 +1,199 @@
+// Rigid contact constraints: build, warm start, soft solve with friction, restitution.
+#include "rigid_contacts.hpp"
+
+#include <algorithm>
+
+namespace rube {
+
+namespace {
+
+/// 1 / (1/mA + 1/mB + (rA x d)^2 / IA + (rB x d)^2 / IB): the pair's effective mass along d.
+double effectiveMass(const LoadedBody& a, const LoadedBody& b, Vec2 rA, Vec2 rB, Vec2 d) {
+    const double ra = rA.cross(d), rb = rB.cross(d);
+    const double k = a.inverseMass + b.inverseMass + a.inverseInertia * ra * ra + b.inverseInertia * rb * rb;
+    return k > 0.0 ? 1.0 / k : 0.0;
+}
+
+/// The arm of a point as it stands in this substep: a rigid body's arm turns with it.
+Vec2 currentArm(const LoadedBody& body, Vec2 anchor) { return rotate(body.turnRotation, anchor); }
+
+} // namespace
+
+RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide b, Vec2 centreA, Vec2 centreB,
+                              const Manifold& manifold, double friction, double bounciness) {
+    RigidContact c;
+    c.a = a;
+    c.b = b;
+    c.normal = manifold.normal;
+    c.friction = friction;
+    c.bounciness = bounciness;
+    c.count = manifold.count;
+    const LoadedBody la = load(view, a), lb = load(view, b);
+    const Vec2 t = c.normal.perpendicular();
+    for (int k = 0; k < manifold.count; ++k) {
+        RigidContactPoint& p = c.points[k];
+        p.anchorA = manifold.points[k].point - centreA;
+        p.anchorB = manifold.points[k].point - centreB;
+        p.baseSeparation = manifold.points[k].separation - c.normal.dot(p.anchorB - p.anchorA);
+        p.normalMass = effectiveMass(la, lb, p.anchorA, p.anchorB, c.normal);
+        p.tangentMass = effectiveMass(la, lb, p.anchorA, p.anchorB, t);
+    }
+    return c;
+}
+
+void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidSolverView& view) {
+    for (const RigidContact& c : contacts) {
+        LoadedBody a = load(view, c.a), b = load(view, c.b);
+        const Vec2 t = c.normal.perpendicular();
+        for (int k = 0; k < c.count; ++k) {
+            const RigidContactPoint& p = c.points[k];
+            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            const Vec2 impulse = c.normal * p.normalImpulse + t * p.tangentImpulse;
+            applyImpulse(a, rA, -impulse);
+            applyImpulse(b, rB, impulse);
+        }
+        store(view, c.a, a);
+        store(view, c.b, b);
+    }
+}
+
+void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view) {
+    for (RigidContact& c : contacts) {
+        const LoadedBody a = load(view, c.a), b = load(view, c.b);
+        for (int k = 0; k < c.count; ++k) {
+            RigidContactPoint& p = c.points[k];
+            if (p.maxNormalImpulse > 0.0) continue;
+            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            p.approachSpeed = -c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+        }
+    }
+}
+
+void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, const RigidContactSoftness& softness,
+                        double h, bool useBias) {
+    const double invH = 1.0 / h;
+    for (RigidContact& c : contacts) {
+        LoadedBody a = load(view, c.a), b = load(view, c.b);
+        const Softness& soft = a.inverseMass == 0.0 || b.inverseMass == 0.0 ? softness.fixed : softness.movable;
+        const Vec2 dp = b.displacement - a.displacement;
+        for (int k = 0; k < c.count; ++k) {
+            RigidContactPoint& p = c.points[k];
+            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            // The current gap from the fixed anchors and how far each body moved and turned.
+            const double s = c.normal.dot(dp + rB - rA) + p.baseSeparation;
+            double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+            if (s > 0.0) {
+                bias = s * invH; // speculative: close at most the gap within this substep
+            } else if (useBias) {
+                bias = std::max(soft.biasRate * s, -softness.maxPushSpeed);
+                massScale = soft.massScale;
+                impulseScale = soft.impulseScale;
+            }
+            const double vn = c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+            const double lambda = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+            const double total = std::max(p.normalImpulse + lambda, 0.0);
+            const double delta = total - p.normalImpulse;
+            p.normalImpulse = total;
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
+            applyImpulse(a, rA, c.normal * -delta);
+            applyImpulse(b, rB, c.normal * delta);
+        }
+        if (c.friction > 0.0) {
+            const Vec2 t = c.normal.perpendicular();
+            for (int k = 0; k < c.count; ++k) {
+                RigidContactPoint& p = c.points[k];
+                const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+                const double vt = t.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+                const double limit = c.friction * p.normalImpulse;
+                const double total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+                const double delta = total - p.tangentImpulse;
+                p.tangentImpulse = total;
+                applyImpulse(a, rA, t * -delta);
+                applyImpulse(b, rB, t * delta);
+            }
+        }
+        store(view, c.a, a);
+        store(view, c.b, b);
+    }
+}
+
+namespace {
+
+bool bounces(const RigidContactPoint& p, double threshold) { return p.maxNormalImpulse > 0.0 && p.approachSpeed >= threshold; }
+
+/// Both points of a two-point contact at once (the 2 x 2 linear complementarity problem solved by
+/// enumerating its four cases, as Box2D v2's block solver): with the points' normal speeds driven to
+/// C a_i together, the kinetic energy changes by (C^2 - 1) / 2 a^T K^-1 a <= 0 for C <= 1. One point
+/// after the other would let the second undo the first and, for a turning body, add energy.
+bool blockRestitution(RigidContact& c, LoadedBody& a, LoadedBody& b) {
+    RigidContactPoint& p1 = c.points[0];
+    RigidContactPoint& p2 = c.points[1];
+    const Vec2 rA1 = currentArm(a, p1.anchorA), rB1 = currentArm(b, p1.anchorB);
+    const Vec2 rA2 = currentArm(a, p2.anchorA), rB2 = currentArm(b, p2.anchorB);
+    const double rn1A = rA1.cross(c.normal), rn1B = rB1.cross(c.normal);
+    const double rn2A = rA2.cross(c.normal), rn2B = rB2.cross(c.normal);
+    const double m = a.inverseMass + b.inverseMass;
+    const double k11 = m + a.inverseInertia * rn1A * rn1A + b.inverseInertia * rn1B * rn1B;
+    const double k22 = m + a.inverseInertia * rn2A * rn2A + b.inverseInertia * rn2B * rn2B;
+    const double k12 = m + a.inverseInertia * rn1A * rn2A + b.inverseInertia * rn1B * rn2B;
+    const double det = k11 * k22 - k12 * k12;
+    if (!(det > 1e-9 * k11 * k22)) return false; // points too close together: K is singular
+    const double vn1 = c.normal.dot(pointVelocity(b, rB1) - pointVelocity(a, rA1));
+    const double vn2 = c.normal.dot(pointVelocity(b, rB2) - pointVelocity(a, rA2));
+    // With x the new total impulses: vn'_i - target_i = (K x)_i + q_i.
+    const double x1old = p1.normalImpulse, x2old = p2.normalImpulse;
+    const double q1 = vn1 - (k11 * x1old + k12 * x2old) - c.bounciness * p1.approachSpeed;
+    const double q2 = vn2 - (k12 * x1old + k22 * x2old) - c.bounciness * p2.approachSpeed;
+    double x1 = (-k22 * q1 + k12 * q2) / det, x2 = (k12 * q1 - k11 * q2) / det;
+    if (x1 < 0.0 || x2 < 0.0) {
+        x1 = -q1 / k11;
+        x2 = 0.0;
+        if (x1 < 0.0 || k12 * x1 + q2 < 0.0) {
+            x1 = 0.0;
+            x2 = -q2 / k22;
+            if (x2 < 0.0 || k12 * x2 + q1 < 0.0) {
+                x2 = 0.0;
+                if (q1 < 0.0 || q2 < 0.0) return false;
+            }
+        }
+    }
+    const double d1 = x1 - x1old, d2 = x2 - x2old;
+    p1.normalImpulse = x1;
+    p2.normalImpulse = x2;
+    applyImpulse(a, rA1, c.normal * -d1);
+    applyImpulse(b, rB1, c.normal * d1);
+    applyImpulse(a, rA2, c.normal * -d2);
+    applyImpulse(b, rB2, c.normal * d2);
+    return true;
+}
+
+} // namespace
+
+void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverView& view, double threshold) {
+    for (RigidContact& c : contacts) {
+        if (c.bounciness == 0.0) continue;
+        LoadedBody a = load(view, c.a), b = load(view, c.b);
+        if (c.count == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold) && blockRestitution(c, a, b)) {
+            store(view, c.a, a);
+            store(view, c.b, b);
+            continue;
+        }
+        for (int k = 0; k < c.count; ++k) {
+            RigidContactPoint& p = c.points[k];
+            if (!bounces(p, threshold)) continue;
+            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            const double vn = c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+            // Drive vn to C times the approach speed, pushing only (lecture 3: v' = -C vn).
+            const double lambda = -p.normalMass * (vn - c.bounciness * p.approachSpeed);
+            const double total = std::max(p.normalImpulse + lambda, 0.0);
+            const double delta = total - p.normalImpulse;
+            p.normalImpulse = total;
+            applyImpulse(a, rA, c.normal * -delta);
+            applyImpulse(b, rB, c.normal * delta);
+        }
+        store(view, c.a, a);
+        store(view, c.b, b);
+    }
+}
+
+} // namespace rube

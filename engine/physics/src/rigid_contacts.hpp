@@ -1,0 +1,74 @@
+#pragma once
+// Internal: contact constraints between a rigid body (box, capsule) and anything else (another
+// rigid body, a circle, a segment), with Coulomb friction and restitution, solved in the circle
+// solver's substeps (the soft step of Box2D v3). Not part of the public API.
+//
+// A contact point keeps its anchors rA, rB (from each body's centre, at the step's start) for the
+// whole step; its gap in a substep follows from how far the bodies moved and turned since:
+//     s = n . ((dpB + R(turnB) rB) - (dpA + R(turnA) rA)) + s0 - n . (rB - rA),
+// so no narrowphase runs inside the substeps. With the point velocities v + omega x r,
+// an impulse P = lambda n on B (and -P on A) changes vn by lambda / normalMass with
+//     1 / normalMass = 1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB.
+
+#include "rigid_manifold.hpp"
+#include "rigid_solver_body.hpp"
+
+#include <span>
+#include <vector>
+
+namespace rube {
+
+/// One point of a rigid contact.
+struct RigidContactPoint {
+    Vec2 anchorA, anchorB;           ///< from each body's centre at the step's start, m
+    double baseSeparation = 0.0;     ///< s0 - n . (rB - rA): the gap formula's constant term
+    double normalMass = 0.0;
+    double tangentMass = 0.0;
+    double normalImpulse = 0.0;      ///< of the current substep (warm starts the next), >= 0
+    double tangentImpulse = 0.0;
+    double maxNormalImpulse = 0.0;   ///< largest normal impulse of the step: 0 means it never touched
+    double approachSpeed = 0.0;      ///< -vn before the substep in which it first pushed: what restitution reverses
+};
+
+/// A manifold turned into a constraint: one normal, up to two points.
+struct RigidContact {
+    BodySide a, b;
+    Vec2 normal;       ///< unit, from A towards B
+    double friction = 0.0;   ///< mu of the pair: the product of both materials' (as circle pairs)
+    double bounciness = 0.0; ///< C of the pair: the product of both materials'
+    int count = 0;
+    RigidContactPoint points[2];
+};
+
+/// The constraint for `manifold` between sides a and b whose centres were `centreA` and `centreB`
+/// at the step's start.
+RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide b, Vec2 centreA, Vec2 centreB,
+                              const Manifold& manifold, double friction, double bounciness);
+
+/// The contact stiffness: a soft spring against a movable body, and one twice as stiff against
+/// infinite mass (it moves one body only), as the circle contacts are.
+struct RigidContactSoftness {
+    Softness movable;
+    Softness fixed;
+    double maxPushSpeed = 3.0; ///< m/s: deep overlaps are pushed out no faster
+};
+
+/// Applies every point's last impulses again as the starting guess (warm starting).
+void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidSolverView& view);
+
+/// Before a substep's impulses: each point that has not pushed yet notes its approach speed -vn.
+/// Measured before any impulse, as Box2D measures it before the step: a point measured inside the sweep
+/// would count the spin its neighbour's impulse just gave the body (the far end of a plank landing
+/// flat dips faster), and bouncing that back would add energy.
+void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view);
+
+/// One Gauss-Seidel sweep: normal impulses (soft push-out when `useBias`, speculative gaps always
+/// kept), then friction within the Coulomb cone |lambda_t| <= mu lambda_n.
+void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, const RigidContactSoftness& softness,
+                        double h, bool useBias);
+
+/// Restitution once per step for points that touched faster than `threshold`: the normal velocity
+/// becomes -C times the approach speed (v' = -C vn, lecture 3).
+void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverView& view, double threshold);
+
+} // namespace rube

@@ -1,0 +1,170 @@
+// The rigid bodies' part of the solver's step: states, contacts found once per step, substep stages.
+#include "rigid_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rube {
+
+namespace {
+
+/// Speculative distance every pair gets on top of its motion (Box2D's four linear slops): a plank
+/// resting on a ball keeps its contact while either moves a little.
+constexpr double kSpeculativeDistance = 0.02;
+/// Stiffness of rigid contacts between two movable bodies (and twice that against infinite mass),
+/// at most this fraction of the substep rate, heavily damped: the circle contacts' tuning.
+constexpr double kContactHertz = 60.0;
+constexpr double kMaxHertzPerSubstepRate = 0.25;
+constexpr double kStaticHertzScale = 2.0;
+constexpr double kContactDampingRatio = 10.0;
+/// Pivots: stiffer than contacts and less damped, as Box2D v3's joints (twice the contact hertz).
+constexpr double kPivotHertz = 120.0;
+constexpr double kPivotDampingRatio = 2.0;
+
+RigidStage::Box boundsOf(const RoundedPolygon& p, double extra) {
+    RigidStage::Box b{p.vertices[0], p.vertices[0]};
+    for (int i = 1; i < p.count; ++i) {
+        b.min = {std::min(b.min.x, p.vertices[i].x), std::min(b.min.y, p.vertices[i].y)};
+        b.max = {std::max(b.max.x, p.vertices[i].x), std::max(b.max.y, p.vertices[i].y)};
+    }
+    const Vec2 grow{p.radius + extra, p.radius + extra};
+    return {b.min - grow, b.max + grow};
+}
+
+/// The farthest any point of the body lies from its centre.
+double extent(const RigidBody& b) {
+    return b.shape == BodyShape::box ? b.halfExtents.length() : b.halfExtents.x + b.halfExtents.y;
+}
+
+} // namespace
+
+void RigidStage::prepare(const StepContext& ctx, double dt) {
+    circleCount_ = static_cast<int>(ctx.circles.size());
+    const std::size_t n = ctx.bodies.size();
+    states_.resize(n);
+    startPosition_.resize(n);
+    reach_.resize(n);
+    shapes_.resize(n);
+    const double gravityTravel = ctx.def.gravity.length() * dt * dt;
+    for (std::size_t i = 0; i < n; ++i) {
+        const RigidBody& b = ctx.bodies[i];
+        const bool dynamic = b.motion == Motion::dynamic && b.inverseMass > 0.0;
+        RigidState& s = states_[i];
+        s = RigidState{};
+        s.velocity = b.motion == Motion::fixed ? Vec2{} : b.velocity;
+        s.omega = b.motion == Motion::fixed || b.fixedRotation ? 0.0 : b.angularVelocity;
+        s.inverseMass = dynamic ? b.inverseMass : 0.0;
+        s.inverseInertia = dynamic && !b.fixedRotation ? b.inverseInertia : 0.0;
+        startPosition_[i] = b.position;
+        // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
+        reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * extent(b)) * dt +
+                    (dynamic ? gravityTravel : 0.0);
+        shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
+    }
+    const double h = dt / std::max(1, ctx.def.substeps);
+    const double hertz = std::min(kContactHertz, kMaxHertzPerSubstepRate / h);
+    contactSoftness_.movable = makeSoftness(hertz, kContactDampingRatio, h);
+    contactSoftness_.fixed = makeSoftness(kStaticHertzScale * hertz, kContactDampingRatio, h);
+    pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
+    findContacts(ctx, dt);
+    preparePivots(ctx.pivots, ctx.bodies, pivots_);
+}
+
+void RigidStage::findContacts(const StepContext& ctx, double dt) {
+    contacts_.clear();
+    const auto& bodies = ctx.bodies;
+    const double gravityTravel = ctx.def.gravity.length() * dt * dt;
+    const std::size_t n = bodies.size();
+    const auto isDynamic = [&](std::size_t i) { return states_[i].inverseMass > 0.0; };
+    boxes_.resize(n);
+    auto& boxes = boxes_;
+    for (std::size_t i = 0; i < n; ++i) boxes[i] = boundsOf(shapes_[i], reach_[i]);
+    // The circle solver's bodies are not bound yet: effective masses need only the rigid states and
+    // the circles' masses and inertias, so a stand-in view serves (a zero omega per body says the
+    // circles may turn: their inertia enters the tangent mass).
+    others_.assign(ctx.circles.size() + ctx.segments.size(), SolverBody{});
+    zeros_.assign(others_.size(), 0.0);
+    const RigidSolverView massView{states_, others_, zeros_, ctx.circles};
+    const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const RoundedPolygon& pa, const RoundedPolygon& pb,
+                         double speculative, const Material& ma, const Material& mb) {
+        const Manifold m = collideRoundedPolygons(pa, pb, speculative);
+        if (m.count == 0) return;
+        contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
+                                             ma.bounciness * mb.bounciness));
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const RigidBody& bi = bodies[i];
+        const BodySide side{static_cast<int>(i), true};
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (!isDynamic(i) && !isDynamic(j)) continue;
+            if (!boxes[i].overlaps(boxes[j])) continue;
+            add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j], reach_[i] + reach_[j],
+                bi.material, bodies[j].material);
+        }
+        for (std::size_t c = 0; c < ctx.circles.size(); ++c) {
+            const Circle& circle = ctx.circles[c];
+            const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0;
+            if (!isDynamic(i) && !circleDynamic) continue;
+            const Vec2 v = circle.motion == Motion::fixed ? Vec2{} : circle.velocity;
+            const double reach = kSpeculativeDistance + v.length() * dt + (circleDynamic ? gravityTravel : 0.0);
+            const Vec2 grow{circle.radius + reach, circle.radius + reach};
+            if (!boxes[i].overlaps({circle.position - grow, circle.position + grow})) continue;
+            add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i], makeRoundedPolygon(circle),
+                reach_[i] + reach, bi.material, circle.material);
+        }
+        if (!isDynamic(i)) continue;
+        for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
+            const Segment& seg = ctx.segments[s];
+            const double reach = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
+            const RoundedPolygon shape = makeRoundedPolygon(seg);
+            if (!boxes[i].overlaps(boundsOf(shape, reach))) continue;
+            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a, shapes_[i], shape, reach_[i] + reach,
+                bi.material, seg.material);
+        }
+    }
+}
+
+void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std::span<const Circle> circles) {
+    view_ = RigidSolverView{states_, others, omega, circles};
+}
+
+void RigidStage::integrateVelocities(Vec2 gravityStep) {
+    for (RigidState& s : states_)
+        if (s.inverseMass > 0.0) s.velocity += gravityStep;
+}
+
+void RigidStage::warmStart() {
+    measureApproach(contacts_, view_);
+    warmStartPivots(pivots_, view_);
+    warmStartRigidContacts(contacts_, view_);
+}
+
+void RigidStage::solve(double h, bool useBias) {
+    solvePivots(pivots_, view_, pivotSoftness_, useBias);
+    solveRigidContacts(contacts_, view_, contactSoftness_, h, useBias);
+}
+
+void RigidStage::integratePositions(double h) {
+    for (RigidState& s : states_) {
+        s.displacement += s.velocity * h;
+        if (s.omega == 0.0) continue;
+        s.turn += s.omega * h;
+        s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
+    }
+}
+
+void RigidStage::applyRestitution(double threshold) { applyRigidRestitution(contacts_, view_, threshold); }
+
+void RigidStage::finish(StepContext& ctx) const {
+    for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
+        RigidBody& b = ctx.bodies[i];
+        if (b.motion == Motion::fixed) continue;
+        const RigidState& s = states_[i];
+        b.position = startPosition_[i] + s.displacement;
+        b.angle += s.turn;
+        b.velocity = s.velocity;
+        b.angularVelocity = s.omega;
+    }
+}
+
+} // namespace rube

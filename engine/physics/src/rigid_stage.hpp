@@ -1,0 +1,67 @@
+#pragma once
+// Internal: the rigid bodies' part of the solver's step. The solver calls it at the same points of
+// its substep loop as its own circle contacts (integrate velocities, warm start, solve, integrate
+// positions, relax; restitution at the end), so pivots, rigid contacts and circle contacts are one
+// Gauss-Seidel system over the same velocities. A world without rigid bodies never enters it.
+// Not part of the public API.
+
+#include "pivot_joint.hpp"
+#include "rigid_contacts.hpp"
+#include "step_method.hpp"
+
+#include <vector>
+
+namespace rube {
+
+/// The rigid bodies, their contacts and pivots during the solver's step.
+class RigidStage {
+public:
+    /// Sets up the step: body states, every contact of a rigid body (found once, with speculative
+    /// margins for how far things may move in `dt`) and the pivots, all as they stand at the step's start.
+    void prepare(const StepContext& ctx, double dt);
+    /// Calls `list(i)` for each circle that meets a rigid body with friction (it must turn this step).
+    template <class List>
+    void listFrictionCircles(List list) const {
+        for (const RigidContact& c : contacts_)
+            if (c.friction > 0.0 && !c.b.rigid && c.b.index < circleCount_) list(c.b.index);
+    }
+    /// Binds the circle solver's bodies and omegas (empty when the step has no rotation) for the substeps.
+    void bind(std::span<SolverBody> others, std::span<double> omega, std::span<const Circle> circles);
+    /// Substep stage: gravity on the dynamic rigid bodies.
+    void integrateVelocities(Vec2 gravityStep);
+    /// Substep stage: contacts note their approach speeds, then pivots and contacts apply last substep's impulses.
+    void warmStart();
+    /// Substep stage: pivots then contacts, with soft position feedback when `useBias` (else a relax pass).
+    void solve(double h, bool useBias);
+    /// Substep stage: displacement and turn of every rigid body.
+    void integratePositions(double h);
+    /// Restitution once per step.
+    void applyRestitution(double threshold);
+    /// Writes the rigid bodies' new state back into the world.
+    void finish(StepContext& ctx) const;
+
+    /// An axis-aligned bounding box, for the pair test.
+    struct Box {
+        Vec2 min, max;
+        bool overlaps(const Box& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
+    };
+
+private:
+    void findContacts(const StepContext& ctx, double dt);
+
+    int circleCount_ = 0;
+    std::vector<RigidState> states_;
+    std::vector<Vec2> startPosition_;
+    std::vector<double> reach_; // per rigid body: speculative margin for the step
+    std::vector<RoundedPolygon> shapes_;
+    std::vector<Box> boxes_;
+    std::vector<SolverBody> others_; // stand-ins while the contacts are built
+    std::vector<double> zeros_;
+    std::vector<RigidContact> contacts_;
+    std::vector<PivotConstraint> pivots_;
+    RigidSolverView view_;
+    RigidContactSoftness contactSoftness_;
+    Softness pivotSoftness_;
+};
+
+} // namespace rube

@@ -1,0 +1,105 @@
+// Scene files: [[box]] and [[capsule]], rigid bodies that turn (or lecture 3's blocks with
+// fixed_rotation), and [[pivot]], a rigid body pinned to the world at a point. Rigid bodies are
+// numbered in file order, every [[box]] first, then every [[capsule]]; a pivot names one by index.
+#include "scene_reading.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace rube::game {
+
+namespace {
+
+constexpr std::string_view kBoxKeys[] = {"position",   "size",     "half_extents", "angle_degrees", "mass",   "density",
+                                         "velocity",   "angular_velocity", "bounciness", "friction", "motion", "fixed_rotation"};
+constexpr std::string_view kPivotKeys[] = {"body", "anchor"};
+constexpr std::string_view kMotionNames[] = {"dynamic", "kinematic", "static"};
+constexpr Motion kMotions[] = {Motion::dynamic, Motion::kinematic, Motion::fixed};
+
+double areaOf(BodyShape shape, Vec2 he) {
+    return shape == BodyShape::box ? 4.0 * he.x * he.y : 4.0 * he.x * he.y + std::numbers::pi * he.y * he.y;
+}
+
+void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape shape) {
+    const char* where = shape == BodyShape::box ? "in [[box]]" : "in [[capsule]]";
+    TableReader body(table, where, kBoxKeys, reading.diag);
+    RigidBodyDef def;
+    def.shape = shape;
+    const auto position = body.vec2("position", Need::required);
+    const bool hasSize = body.find("size") != nullptr, hasHalf = body.find("half_extents") != nullptr;
+    if (hasSize == hasHalf) {
+        body.error(hasSize ? body.valuePlace("half_extents") : body.tablePlace(),
+                   shape == BodyShape::box ? "give a box its size = [width, height] or its half_extents, one of them"
+                                           : "give a capsule its size = [length, thickness] or its half_extents = [half core length, radius], one of them");
+        return;
+    }
+    const auto extents = body.numberOrVec2(hasSize ? "size" : "half_extents", NumberRange::positive(), Need::required);
+    if (!position || !extents) return;
+    def.position = *position;
+    if (hasHalf) {
+        def.halfExtents = *extents;
+    } else if (shape == BodyShape::box) {
+        def.halfExtents = *extents * 0.5;
+    } else {
+        // A capsule's size is its whole outline: length end to end over the caps, and its thickness.
+        const double radius = 0.5 * extents->y;
+        if (extents->x < 2.0 * radius) {
+            body.error(body.valuePlace("size"), "a capsule's length must be at least its thickness");
+            return;
+        }
+        def.halfExtents = {0.5 * extents->x - radius, radius};
+    }
+    if (const auto a = body.number("angle_degrees")) def.angle = *a * std::numbers::pi / 180.0;
+    const auto mass = body.number("mass", NumberRange::positive());
+    const auto density = body.number("density", NumberRange::positive());
+    if (mass && density) body.error(body.valuePlace("density"), "give mass or density, not both");
+    if (mass) def.mass = *mass;
+    else if (density) def.mass = *density * areaOf(shape, def.halfExtents);
+    if (const auto v = body.vec2("velocity")) def.velocity = *v;
+    if (const auto w = body.number("angular_velocity")) def.angularVelocity = *w;
+    if (const auto c = body.number("bounciness", NumberRange::unit())) def.material.bounciness = *c;
+    if (const auto mu = body.number("friction", NumberRange::nonNegative())) def.material.friction = *mu;
+    if (const auto motion = body.choice("motion", kMotionNames)) def.motion = kMotions[*motion];
+    if (const auto fixed = body.boolean("fixed_rotation")) {
+        if (*fixed && shape == BodyShape::capsule) {
+            body.error(body.valuePlace("fixed_rotation"), "only a box can have fixed_rotation (lecture 3's block)");
+            return;
+        }
+        def.fixedRotation = *fixed;
+    }
+    reading.scene.bodies.push_back(def);
+}
+
+void readPivot(const toml::table& table, SceneReading& reading) {
+    TableReader pivot(table, "in [[pivot]]", kPivotKeys, reading.diag);
+    const auto& bodies = reading.scene.bodies;
+    const auto index = pivot.integer("body", 0, std::max<std::int64_t>(0, static_cast<std::int64_t>(bodies.size()) - 1), Need::required);
+    if (!index) return;
+    if (bodies.empty()) {
+        pivot.error(pivot.valuePlace("body"), "a pivot pins a rigid body: no [[box]] or [[capsule]] is defined");
+        return;
+    }
+    const RigidBodyDef& body = bodies[static_cast<std::size_t>(*index)];
+    const Vec2 anchor = pivot.vec2("anchor").value_or(body.position);
+    // The anchor in the body's own frame: turned back by its angle.
+    const Vec2 d = anchor - body.position;
+    const double c = std::cos(body.angle), s = std::sin(body.angle);
+    reading.scene.pivots.push_back(PivotDef{static_cast<int>(*index), {c * d.x + s * d.y, -s * d.x + c * d.y}, anchor});
+}
+
+} // namespace
+
+void readRigidBodies(TableReader& root, SceneReading& reading) {
+    for (const toml::table* table : root.arrayOfTables("box")) readRigidBody(*table, reading, BodyShape::box);
+    for (const toml::table* table : root.arrayOfTables("capsule")) readRigidBody(*table, reading, BodyShape::capsule);
+    for (const toml::table* table : root.arrayOfTables("pivot")) readPivot(*table, reading);
+}
+
+bool needsRotatingSolver(const SceneDesc& scene) {
+    if (!scene.pivots.empty()) return true;
+    for (const RigidBodyDef& b : scene.bodies)
+        if (b.shape != BodyShape::box || !b.fixedRotation) return true;
+    return false;
+}
+
+} // namespace rube::game

@@ -1,10 +1,13 @@
 // `rube run`: load, check the options, step the world, write the trace and the frames, print the summary.
 #include "run_command.hpp"
 
+#include "scene_reading.hpp"
+
 #include "frame_recorder.hpp"
 #include "play_command.hpp"
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
+#include "scene_reading.hpp"
 #include "scene_view.hpp"
 #include "trace_writer.hpp"
 
@@ -119,6 +122,11 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return 2;
     }
     const SceneDesc& scene = *load.scene;
+    if (method && *method != Method::solver && *method != Method::automatic && needsRotatingSolver(scene)) {
+        err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules or pivots of "
+            << options.scene << ": use auto or solver\n";
+        return 2;
+    }
     // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
     if (scene.level.isLevel() || !options.script.empty()) return playLevel(options, scene, out, err);
     // --steps is capped by its validator and a scene's duration when read; only --frames x --every is left.

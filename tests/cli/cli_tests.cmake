@@ -84,6 +84,8 @@ rube_cli_test("usage --trails without --out" "run|${RUBE_LEVELS}/bounce.toml|--t
 # Failed runs: status 2, one line, and no trace (nor a temporary) left behind.
 rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-key.toml|--no-render|--trace|${RUBE_CLI_OUT}/bad.csv" 2
               -DSTDERR_FIXTURE=${RUBE_CLI_DIR}/bad-unknown-key.toml -DTRACE=${RUBE_CLI_OUT}/bad.csv -DNO_TRACE=ON)
+rube_cli_test("run a method that cannot turn bodies" "run|${RUBE_LEVELS}/seesaw-domino.toml|--no-render|--method|exact" 2
+              "-DSTDERR_LINE=rube run: --method exact cannot move the turning boxes, capsules or pivots of ${RUBE_LEVELS}/seesaw-domino.toml: use auto or solver")
 rube_cli_test("run unknown method leaves no trace" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--method|exat|--trace|${RUBE_CLI_OUT}/method.csv" 2
               "-DSTDERR_LINE=rube run: unknown method 'exat' (valid methods: discrete, turn-based, exact, solver, auto)"
               -DTRACE=${RUBE_CLI_OUT}/method.csv -DNO_TRACE=ON)

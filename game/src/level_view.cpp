@@ -80,6 +80,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius), style("ground", "ground_outline", thin ? kThinLine : kOutline));
     }
     drawRopes(world, list);
+    if (!world.bodies().empty()) drawBoxes(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
     std::vector<char> itemCircle(world.circles().size(), 0);
     for (std::size_t i = 0; i < run.items().size(); ++i)

@@ -30,6 +30,7 @@ World buildWorld(const SceneDesc& scene) {
     for (const NamedPath& path : scene.paths) world.addPath(path.path);
     for (const CircleDef& circle : scene.circles) world.addCircle(circle);
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
+    for (const RigidBodyDef& body : scene.bodies) world.addBody(body);
     for (const RopeDef& rope : scene.ropes) world.addRope(rope);
     world.fields().waters = scene.waters;
     return world;

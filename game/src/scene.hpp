@@ -32,6 +32,8 @@ struct SceneDesc {
     std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
     std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
     std::vector<Water> waters;      ///< [[water]] pools, in file order
+    std::vector<RigidBodyDef> bodies; ///< [[box]] in file order: index i is the World's body i
+    std::vector<std::string> bodyNames; ///< the `name` of each box, "" when unnamed
     std::vector<RopeDef> ropes;     ///< [[rope]] in file order: index i is the World's rope i
     std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene

@@ -9,7 +9,7 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water", "rope"};
+constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water", "rope", "box"};
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 // The level's tables: accepted everywhere, but not offered in a physics scene's key list.
 constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
@@ -210,6 +210,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     readCircles(root, reading);
     readCircleGrids(root, reading);
     readSegments(root, reading);
+    readBoxes(root, reading);
     readRopes(root, reading);
     readLevel(root, reading);
     if (!diag.empty()) return {std::nullopt, diag.sorted()};

@@ -91,6 +91,13 @@ void drawRopes(const World& world, render::DrawList& list) {
     }
 }
 
+void drawBoxes(const World& world, render::DrawList& list) {
+    for (const RigidBody& b : world.bodies()) {
+        if (b.shape != BodyShape::box) continue;
+        list.box(toPoint(b.position), toPoint(b.halfExtents), static_cast<float>(b.angle), styleFor(b.motion, kOutlineWidth));
+    }
+}
+
 void SceneView::drawSegments(const World& world, render::DrawList& list) const {
     for (const Segment& s : world.segments()) {
         const bool thin = s.radius * camera_.pixelsPerMetre(frame_) < 0.5 * kThinLineWidth;
@@ -133,6 +140,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     // Back to front: walls, then where balls have been, the balls, and the debug marks on top.
     drawSegments(world, list);
     drawRopes(world, list);
+    if (!world.bodies().empty()) drawBoxes(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.

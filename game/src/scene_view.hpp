@@ -19,6 +19,9 @@ namespace rube::game {
 /// to its ball's centre; drawn before the balls, so the line meets each ball at its rim.
 void drawRopes(const World& world, render::DrawList& list);
 
+/// Draws every box of `world` (lecture 3's blocks, axis-aligned) as a rectangle, styled by how it moves.
+void drawBoxes(const World& world, render::DrawList& list);
+
 /// What a view draws besides the bodies; a caller changes only what it needs.
 struct ViewOptions {
     bool trails = false;         ///< --trails: each dynamic circle's recent path (the lecture's debug key D)

@@ -46,7 +46,7 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 } // namespace
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
-    const std::set<std::string> expected = {"ball-stack", "bounce", "bullet", "float", "newtons-cradle",
+    const std::set<std::string> expected = {"ball-stack", "blocks", "bounce", "bullet", "float", "newtons-cradle",
                                             "pendulum", "pile", "pool-break", "projectile", "rolling", "seesaw-domino", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
@@ -320,4 +320,22 @@ TEST_CASE("[[rope]] joins a circle named or numbered to an anchor or another cir
         CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchr = [0, 3]\nanchor = [0, 3]\n") ==
               "s.toml:16:1: unknown key 'anchr' in [[rope]] (did you mean 'anchor'?)");
     }
+}
+
+TEST_CASE("scene files: [[box]] is lecture 3's block with fixed_rotation = true, else it turns", "[scene][blocks]") {
+    const SceneLoad load = parseScene("name = \"b\"\n[[box]]\nposition = [1, 2]\nsize = [2, 0.5]\nmass = 3\nbounciness = 0.5\nfixed_rotation = true\n"
+                                      "[[box]]\nposition = [0, 0]\nsize = 1\nmotion = \"static\"\n",
+                                      "s.toml");
+    REQUIRE(load.ok());
+    const auto& bodies = load.scene->bodies;
+    REQUIRE(bodies.size() == 2);
+    CHECK(bodies[0].shape == BodyShape::box);
+    CHECK(bodies[0].fixedRotation);
+    CHECK(bodies[0].halfExtents == Vec2{1.0, 0.25}); // size is the full width and height
+    CHECK(bodies[0].mass == 3.0);
+    CHECK(bodies[0].material.bounciness == 0.5);
+    CHECK(bodies[1].halfExtents == Vec2{0.5, 0.5});
+    CHECK(bodies[1].motion == Motion::fixed);
+    CHECK_FALSE(bodies[1].fixedRotation);
+    CHECK(errorOf("name = \"b\"\n[[box]]\nposition = [0, 1]\n") == "s.toml:2:1: give a box its size = [width, height] or its half_extents, one of them");
 }

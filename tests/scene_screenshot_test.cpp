@@ -35,6 +35,7 @@ struct Golden {
 };
 constexpr Golden kGoldens[] = {
     {"ball-stack", 120, false, false},   // t = 2 s: the column should still stand
+    {"blocks", 90, false, true},         // t = 1.5 s: lecture 3's blocks mid-flight, impacts on one axis each
     {"bounce", 120, true, false},        // t = 2 s: on the way up after the first bounce
     {"bullet", 1, true, true},           // the step that crosses the line: the impact and the way back
     {"float", 300, false, false},        // t = 5 s: one high, one half under, one on the bottom
@@ -102,6 +103,7 @@ TEST_CASE("every physics scene has a golden frame", "[screenshot][scene]") {
 
 // One test per scene, so that `ctest -R screenshot` names the scene that changed.
 TEST_CASE("ball-stack matches its golden frames", "[screenshot][scene]") { checkGoldens("ball-stack"); }
+TEST_CASE("blocks matches its golden frames", "[screenshot][scene]") { checkGoldens("blocks"); }
 TEST_CASE("bounce matches its golden frames", "[screenshot][scene]") { checkGoldens("bounce"); }
 TEST_CASE("bullet matches its golden frames", "[screenshot][scene]") { checkGoldens("bullet"); }
 TEST_CASE("float matches its golden frames", "[screenshot][scene]") { checkGoldens("float"); }

@@ -35,6 +35,7 @@ struct SceneDesc {
     std::vector<RopeDef> ropes;     ///< [[rope]] in file order: index i is the World's rope i
     std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
     std::vector<RigidBodyDef> bodies; ///< every [[box]], then every [[capsule]]: index i is the World's body i
+    std::vector<std::string> bodyNames; ///< the `name` of each box or capsule, "" when unnamed
     std::vector<PivotDef> pivots;     ///< [[pivot]] in file order
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 

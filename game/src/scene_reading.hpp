@@ -24,6 +24,7 @@ void readCircles(TableReader& root, SceneReading& reading);
 void readCircleGrids(TableReader& root, SceneReading& reading);
 /// Reads every [[segment]] of the file into scene.segments.
 void readSegments(TableReader& root, SceneReading& reading);
+/// Reads every [[box]] of the file into scene.bodies (lecture 3's blocks unless fixed_rotation = false).
 /// Reads every [[rope]] of the file into scene.ropes (after the circles, which ropes name).
 void readRopes(TableReader& root, SceneReading& reading);
 

@@ -12,9 +12,12 @@ namespace {
 
 constexpr std::string_view kBoxKeys[] = {"position",   "size",     "half_extents", "angle_degrees", "mass",   "density",
                                          "velocity",   "angular_velocity", "bounciness", "friction", "motion", "fixed_rotation"};
+// A name is how goals and scripts refer to a body; it is not offered in a physics scene's key list.
+constexpr std::string_view kNameKey[] = {"name"};
 constexpr std::string_view kPivotKeys[] = {"body", "anchor"};
-constexpr std::string_view kMotionNames[] = {"dynamic", "kinematic", "static"};
-constexpr Motion kMotions[] = {Motion::dynamic, Motion::kinematic, Motion::fixed};
+// No kinematic bodies yet: a rigid body has no scripted path (a moving platform is a segment).
+constexpr std::string_view kMotionNames[] = {"dynamic", "static"};
+constexpr Motion kMotions[] = {Motion::dynamic, Motion::fixed};
 
 double areaOf(BodyShape shape, Vec2 he) {
     return shape == BodyShape::box ? 4.0 * he.x * he.y : 4.0 * he.x * he.y + std::numbers::pi * he.y * he.y;
@@ -22,7 +25,7 @@ double areaOf(BodyShape shape, Vec2 he) {
 
 void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape shape) {
     const char* where = shape == BodyShape::box ? "in [[box]]" : "in [[capsule]]";
-    TableReader body(table, where, kBoxKeys, reading.diag);
+    TableReader body(table, where, kBoxKeys, reading.diag, {}, kNameKey);
     RigidBodyDef def;
     def.shape = shape;
     const auto position = body.vec2("position", Need::required);
@@ -67,7 +70,9 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
         }
         def.fixedRotation = *fixed;
     }
+    const std::string name = readBodyName(body, reading);
     reading.scene.bodies.push_back(def);
+    reading.scene.bodyNames.push_back(name);
 }
 
 void readPivot(const toml::table& table, SceneReading& reading) {

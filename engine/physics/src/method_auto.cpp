@@ -63,8 +63,9 @@ private:
     // every dynamic circle against every shape.
     static std::int64_t affordableEvents(const StepContext& ctx) {
         const auto dynamic = static_cast<std::int64_t>(
-            std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion == Motion::dynamic; }));
-        const auto shapes = static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size());
+            std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion == Motion::dynamic; }) +
+            std::count_if(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
+        const auto shapes = static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() + ctx.bodies.size());
         return kExactBudget / std::max<std::int64_t>(1, dynamic * shapes);
     }
 
@@ -93,6 +94,7 @@ private:
     bool tryExact(StepContext& ctx, double dt, std::int64_t affordable) {
         circlesBefore_.assign(ctx.circles.begin(), ctx.circles.end());
         segmentsBefore_.assign(ctx.segments.begin(), ctx.segments.end());
+        bodiesBefore_.assign(ctx.bodies.begin(), ctx.bodies.end()); // lecture 3's blocks move under exact too
         const std::size_t impactsBefore = ctx.impacts.size();
         const StepStats statsBefore = ctx.stats;
         WorldDef trialDef = ctx.def;
@@ -102,6 +104,7 @@ private:
         if (ctx.stats.capsHit == statsBefore.capsHit) return true;
         std::copy(circlesBefore_.begin(), circlesBefore_.end(), ctx.circles.begin());
         std::copy(segmentsBefore_.begin(), segmentsBefore_.end(), ctx.segments.begin());
+        std::copy(bodiesBefore_.begin(), bodiesBefore_.end(), ctx.bodies.begin());
         ctx.impacts.resize(impactsBefore);
         ctx.stats = statsBefore;
         return false;
@@ -114,6 +117,7 @@ private:
     int stint_ = kFirstStint;
     std::vector<Circle> circlesBefore_;
     std::vector<Segment> segmentsBefore_;
+    std::vector<RigidBody> bodiesBefore_;
 };
 
 } // namespace

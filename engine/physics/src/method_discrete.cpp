@@ -1,6 +1,7 @@
 // The discrete method (lecture 5's first method, lecture 3's fixed time step): move every body over
 // the whole step, then push overlaps apart and reflect. Cheap, and honest about where it fails: a
 // ball tunnels through a line when speed x dt > 2 (r + segment radius), and stacks sink.
+#include "block_pairs.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -28,12 +29,27 @@ public:
             s.b += s.velocity * dt;
         }
         // "Try to correct overlapping positions, resolve collisions" (lecture 3), all at the end of the step.
-        const int events = separateOverlaps(ctx, startCentres_, dt, ctx.time + dt, true);
+        int events = separateOverlaps(ctx, startCentres_, dt, ctx.time + dt, true);
+        if (!ctx.bodies.empty()) events += stepBlocks(ctx, dt);
         ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
     }
 
 private:
+    // Lecture 3's blocks the same way: semi-implicit Euler, then pushed out on the side they started.
+    int stepBlocks(StepContext& ctx, double dt) {
+        blockStarts_.resize(ctx.bodies.size());
+        for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
+            RigidBody& b = ctx.bodies[i];
+            blockStarts_[i] = b.position;
+            if (!isBlock(b)) continue;
+            if (b.motion == Motion::dynamic) b.velocity += ctx.def.gravity * dt;
+            if (b.motion != Motion::fixed) b.position += b.velocity * dt;
+        }
+        return separateBlockOverlaps(ctx, blockStarts_, dt, ctx.time + dt);
+    }
+
     std::vector<Vec2> startCentres_; ///< reused every step: no allocation once grown
+    std::vector<Vec2> blockStarts_;
 };
 
 } // namespace

@@ -5,6 +5,7 @@
 // Approaches slower than restingSpeed are resting contact: resolved with C = 0, left out of the
 // search for the rest of the step, and pushed apart at its end. Meant for sparse scenes: every
 // event costs an O(n^2) search, and a pile of many balls is the solver method's job.
+#include "block_pairs.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -35,6 +36,7 @@ struct Candidate {
     Other kind = Other::circle;
     int other = -1;
     Vec2 normal;
+    BlockEvent block; ///< a block's impact instead, when block.block >= 0 (lecture 3's blocks)
 };
 
 // A pair touching (or nearly) at the end of a step, to be settled; `side` is a segment face's side.
@@ -56,6 +58,7 @@ public:
         circleCount_ = static_cast<int>(ctx.circles.size());
         columns_ = circleCount_ + static_cast<int>(ctx.segments.size());
         pairs_.assign(static_cast<std::size_t>(circleCount_) * static_cast<std::size_t>(columns_), kSearched);
+        blockResting_.clear();
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
         // resolve it" (lecture 3). Work is bounded by def.maxEventsPerStep.
@@ -65,7 +68,7 @@ public:
         while (elapsed < dt) {
             const double horizon = dt - elapsed;
             const Candidate next = earliestCollision(ctx, horizon);
-            if (next.circle < 0) {
+            if (next.circle < 0 && next.block.block < 0) {
                 advance(ctx, horizon);
                 break;
             }
@@ -85,6 +88,11 @@ public:
             centres_.resize(ctx.circles.size());
             for (std::size_t i = 0; i < ctx.circles.size(); ++i) centres_[i] = ctx.circles[i].position;
             separateOverlaps(ctx, centres_, 0.0, ctx.time + dt, false);
+            if (!ctx.bodies.empty()) {
+                centres_.resize(ctx.bodies.size());
+                for (std::size_t i = 0; i < ctx.bodies.size(); ++i) centres_[i] = ctx.bodies[i].position;
+                separateBlockOverlaps(ctx, centres_, 0.0, ctx.time + dt);
+            }
         }
         settleContacts(ctx, dt);
         ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
@@ -107,7 +115,7 @@ private:
         const Vec2 g = ctx.def.gravity;
         const auto consider = [&](const std::optional<Collision>& hit, int circle, Other kind, int other) {
             if (hit && hit->timeOfImpact < best.time)
-                best = Candidate{hit->timeOfImpact, circle, kind, other, hit->normal};
+                best = Candidate{hit->timeOfImpact, circle, kind, other, hit->normal, {}};
         };
         for (int i = 0; i < circleCount_; ++i) {
             const Circle& c = ctx.circles[i];
@@ -129,6 +137,13 @@ private:
                 consider(hit, i, hit && hit->lineCap ? Other::segmentCap : Other::segment, k);
             }
         }
+        // Lecture 3's blocks against everything; a world without bodies never enters the loop.
+        const BlockSearch search{g, horizon, true, false, blockResting_};
+        for (int b = 0; b < static_cast<int>(ctx.bodies.size()); ++b) {
+            if (!isBlock(ctx.bodies[b])) continue;
+            const BlockEvent event = earliestBlockImpact(ctx, b, search);
+            if (event.time < best.time) best = Candidate{event.time, -1, event.kind, event.other, event.normal, event};
+        }
         return best;
     }
 
@@ -149,10 +164,15 @@ private:
             s.a += s.velocity * t;
             s.b += s.velocity * t;
         }
+        if (!ctx.bodies.empty()) advanceBlocks(ctx, t);
     }
 
     // Resolves one impact at world time `time`; slow approaches are resting contact (C = 0).
     void resolve(StepContext& ctx, const Candidate& hit, double time) {
+        if (hit.block.block >= 0) {
+            resolveBlock(ctx, hit.block, time);
+            return;
+        }
         Circle& c = ctx.circles[hit.circle];
         Vec2 otherVelocity;
         double otherInverseMass = 0.0;
@@ -199,6 +219,32 @@ private:
     void searchAgain(int circle) {
         for (int k = 0; k < columns_; ++k) pairs_[pairIndex(circle, k)] = kSearched;
         for (int i = 0; i < circle; ++i) pairs_[pairIndex(i, circle)] = kSearched;
+        if (!blockResting_.empty()) forgetResting(Other::circle, circle);
+    }
+
+    // Leaves out of blockResting_ every pair with this circle (kind circle) or block (kind body).
+    void forgetResting(Other kind, int index) {
+        std::erase_if(blockResting_, [&](const BlockPair& p) {
+            return (p.kind == kind && p.other == index) || (kind == Other::body && p.block == index);
+        });
+    }
+
+    // A block's impact, as a circle's: slow approaches are resting contact (C = 0), left out of the
+    // search for the rest of the step; a real impact makes both bodies' pairs searched again.
+    void resolveBlock(StepContext& ctx, const BlockEvent& event, double time) {
+        const BlockPartner partner = blockPartner(ctx, event.kind, event.other);
+        const double approach = approachSpeed(ctx.bodies[event.block].velocity, partner.velocity, event.normal);
+        const bool isResting = approach < ctx.restingSpeed;
+        resolveBlockImpact(ctx, event, time, isResting, true);
+        if (isResting) {
+            ++ctx.stats.restingContacts;
+            const Other kind = event.kind == Other::segmentCap ? Other::segment : event.kind;
+            blockResting_.push_back(BlockPair{event.block, kind, event.other, event.normal});
+            return;
+        }
+        forgetResting(Other::body, event.block);
+        if (event.kind == Other::body) forgetResting(Other::body, event.other);
+        if (event.kind == Other::circle && partner.dynamic) searchAgain(event.other);
     }
 
     // Resting bodies fell into what they rest on for the rest of the step (g t^2 / 2, a millimetre
@@ -207,6 +253,7 @@ private:
     // infinite mass against one above it (shock propagation): one pass settles a whole stack.
     void settleContacts(StepContext& ctx, double dt) {
         collectContacts(ctx, ctx.restingSpeed * dt);
+        if (!ctx.bodies.empty()) settleBlockContacts(ctx, ctx.restingSpeed * dt, blockResting_);
         if (contacts_.empty()) return;
         orderFromTheGroundUp(ctx);
         for (int pass = 0; pass < kSettlePasses; ++pass) {
@@ -328,6 +375,7 @@ private:
     std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
     std::vector<int> levels_;         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit
+    std::vector<BlockPair> blockResting_; ///< blocks' pairs resting for the rest of the step (few)
 };
 
 } // namespace

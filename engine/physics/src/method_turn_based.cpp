@@ -1,6 +1,7 @@
 // The turn-based method (lecture 3): velocities take gravity first, then each dynamic body in index
 // order moves over the step or until its first impact against the others where they are now, and
 // that impact is resolved at once. Efficient and overlap-free, but positions are slightly off: order matters.
+#include "block_pairs.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -28,9 +29,16 @@ public:
         // "Update velocities using gravity and other forces" (lecture 3).
         for (Circle& c : ctx.circles)
             if (c.motion == Motion::dynamic) c.velocity += ctx.def.gravity * dt;
+        for (RigidBody& b : ctx.bodies)
+            if (isBlock(b) && b.motion == Motion::dynamic) b.velocity += ctx.def.gravity * dt;
         int events = 0;
         for (int i = 0; i < static_cast<int>(ctx.circles.size()); ++i)
             if (ctx.circles[i].motion == Motion::dynamic && takeTurn(ctx, i, dt)) ++events;
+        // Lecture 3's blocks take their turns after the circles, in index order.
+        for (int i = 0; i < static_cast<int>(ctx.bodies.size()); ++i)
+            if (isBlock(ctx.bodies[i]) && ctx.bodies[i].motion == Motion::dynamic && takeBlockTurn(ctx, i, dt)) ++events;
+        for (RigidBody& b : ctx.bodies)
+            if (isBlock(b) && b.motion == Motion::kinematic) b.position += b.velocity * dt;
         // Kinematic bodies follow their scripts over the whole step; the turns saw them doing so.
         for (Circle& c : ctx.circles)
             if (c.motion == Motion::kinematic) c.position += c.velocity * dt;
@@ -71,6 +79,20 @@ private:
                      TurnImpact{{}, Other::circle, j, o.velocity, o.inverseMass, pairBounciness(c.material, o.material),
                                 scripted});
         }
+        // Blocks stand still too; the block's motion relative to the circle is the circle's reversed.
+        for (int b = 0; b < static_cast<int>(ctx.bodies.size()); ++b) {
+            const RigidBody& o = ctx.bodies[b];
+            if (!isBlock(o)) continue;
+            const bool scripted = o.motion == Motion::kinematic;
+            const Vec2 relative = scripted ? c.velocity - o.velocity : c.velocity;
+            const auto hit = blockCircleCollision({o.position, -relative, o.halfExtents, {}}, c.position, c.radius, dt);
+            if (!hit) continue;
+            // Seen from the circle: its centre then, and the normal from the block towards it.
+            const Collision seen{hit->timeOfImpact, c.position + relative * hit->timeOfImpact, -hit->normal,
+                                 hit->contactPoint + relative * hit->timeOfImpact, hit->lineCap};
+            consider(seen, TurnImpact{{}, Other::body, b, o.velocity, o.inverseMass, pairBounciness(c.material, o.material),
+                                      scripted});
+        }
         if (!first) {
             c.position += c.velocity * dt;
             return false;
@@ -86,6 +108,8 @@ private:
                                               hit.normal, first->bounciness);
         if (first->kind == Other::circle && ctx.circles[first->other].motion == Motion::dynamic)
             ctx.circles[first->other].velocity = otherVelocity;
+        if (first->kind == Other::body && ctx.bodies[first->other].motion == Motion::dynamic)
+            ctx.bodies[first->other].velocity = otherVelocity;
         // The turn ends at the impact. Against a scripted body, which does not stop, the circle moves
         // on with its new velocity for the rest of the step: it would lag a step behind otherwise,
         // and a ball on a rising platform would sink through it.
@@ -95,6 +119,27 @@ private:
                                      approach});
         ++ctx.stats.impacts;
         return true;
+    }
+
+    // A block's turn (lecture 3's Assignment 3.3): it moves over dt or to its first impact against the
+    // others where they stand, and that impact is resolved on the axis of impact.
+    static bool takeBlockTurn(StepContext& ctx, int i, double dt) {
+        RigidBody& b = ctx.bodies[i];
+        const BlockEvent event = earliestBlockImpact(ctx, i, BlockSearch{{}, dt, false, true, {}});
+        if (event.block < 0) {
+            b.position += b.velocity * dt;
+            return false;
+        }
+        const double t = event.time;
+        const BlockPartner partner = blockPartner(ctx, event.kind, event.other);
+        const bool scripted = partner.inverseMass == 0.0 && partner.velocity != Vec2{};
+        // Its own velocity over t: the relative motion plus what a scripted other carried it by.
+        b.position += b.velocity * t;
+        const double approach = approachSpeed(b.velocity, partner.velocity, event.normal);
+        resolveBlockImpact(ctx, event, ctx.time + t, false, approach > 0.0);
+        // The turn ends at the impact, except against a scripted body, which does not stop.
+        if (scripted) b.position += b.velocity * (dt - t);
+        return approach > 0.0;
     }
 };
 

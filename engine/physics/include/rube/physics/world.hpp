@@ -49,8 +49,8 @@ struct WorldDef {
     AirDrag airDrag;            ///< drag of still air on every dynamic circle; none by default
 };
 
-/// What kind of thing a circle hit.
-enum class Other : std::uint8_t { circle, segment, segmentCap };
+/// What kind of thing a circle (or a block) hit.
+enum class Other : std::uint8_t { circle, segment, segmentCap, body };
 
 /// One resolved impact: for debugging overlays, game triggers and the trace.
 struct Impact {
@@ -61,6 +61,7 @@ struct Impact {
     Vec2 pointOfImpact;         ///< where the surfaces touch
     Vec2 normal;                ///< unit collision normal, pointing from the other body to the circle
     double approachSpeed = 0.0; ///< normal speed of approach before the resolve, m/s
+    int body = -1;              ///< the block, for a block's impact (circle is then -1; normal points towards the block)
 };
 
 /// Counters over the world's life, for the summary and the bench.

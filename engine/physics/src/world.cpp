@@ -72,6 +72,9 @@ int World::addSegment(const SegmentDef& d) {
     s.path = d.path;
     s.surfaceSpeed = d.surfaceSpeed;
     s.pivotAlong = d.pivotAlong;
+    // A paddle starts turned as its path says at t = 0 (a translating path's first offset waits for the first step, as before).
+    if (d.path >= 0 && static_cast<std::size_t>(d.path) < paths_.size() && paths_[static_cast<std::size_t>(d.path)].turns())
+        placeTurningSegment(s, paths_[static_cast<std::size_t>(d.path)], 0.0);
     segments_.push_back(s);
     return static_cast<int>(segments_.size()) - 1;
 }

@@ -75,3 +75,4 @@ TEST_CASE("balloon: first and goal frames", "[screenshot][level]") { checkLevel(
 TEST_CASE("magnet: first and goal frames", "[screenshot][level]") { checkLevel("magnet"); }
 TEST_CASE("fan: first and goal frames", "[screenshot][level]") { checkLevel("fan"); }
 TEST_CASE("rope: first and goal frames", "[screenshot][level]") { checkLevel("rope"); }
+TEST_CASE("paddle: first and goal frames", "[screenshot][level]") { checkLevel("paddle"); }

@@ -17,7 +17,7 @@ namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
                                "bucket", "trampoline", "balloon",       "magnet",         "fan",
-                               "rope"};
+                               "rope",   "paddle"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -339,4 +339,23 @@ TEST_CASE("rope: a switch may name a rope; a name that is neither item nor rope 
                              "[[item]]\nkind = \"switch\"\nposition = [3, 0]\n";
     CHECK(firstError(base + "triggers = \"line\"\n") == "no error");
     CHECK(firstError(base + "triggers = \"lnie\"\n").starts_with("t.toml:13:12: unknown cannon, bomb, fan or magnet 'lnie'"));
+}
+
+TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never turns never throws the wheel", "[level][kinematic]") {
+    const auto placed = [](double angle) {
+        return std::vector<Placement>{{ItemKind::ramp, {-0.8, 2.4}, angle * std::numbers::pi / 180.0, "", {}}};
+    };
+    const auto run = [](const SceneDesc& level, const std::vector<Placement>& placements) {
+        LevelRun r(level, placements);
+        for (int i = 0; i < 1000; ++i) r.step();
+        return r;
+    };
+    SceneDesc level = loadLevel("paddle");
+    REQUIRE_FALSE(checkPlacements(level, placed(-15.0)));
+    CHECK(run(level, placed(-15.0)).goalFrame());
+    CHECK_FALSE(run(level, placed(-40.0)).goalFrame()); // the wheel shoots past the paddle's lip side
+    // The same paddle held at rest: the wheel lies on it and never reaches the flag.
+    for (NamedPath& path : level.paths)
+        for (PathKey& key : path.path.keys) key.angle = 8.0 * std::numbers::pi / 180.0;
+    CHECK_FALSE(run(level, placed(-15.0)).goalFrame());
 }

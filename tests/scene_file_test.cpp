@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <numbers>
+
 #include <algorithm>
 #include <filesystem>
 #include <set>
@@ -226,6 +228,17 @@ TEST_CASE("paths: bodies refer to them by name, and they must exist", "[paths]")
         CHECK(scene.segments[0].path == 0);
         CHECK(buildWorld(scene).paths().size() == 1);
     }
+    SECTION("a fourth number in a key turns a segment about its pivot, in degrees") {
+        const SceneDesc scene = sceneOf("name = \"x\"\n[[path]]\nname = \"paddle\"\nkeys = [[0, 0, 0, -30], [1, 0, 0, 90]]\n"
+                                        "[[segment]]\na = [0, 0]\nb = [1, 0]\npath = \"paddle\"\npivot = 0\n");
+        CHECK(scene.paths[0].path.keys[0].angle == Approx(-std::numbers::pi / 6));
+        CHECK(scene.paths[0].path.keys[1].angle == Approx(std::numbers::pi / 2));
+        CHECK(scene.segments[0].pivotAlong == 0.0);
+        CHECK(errorOf("name = \"x\"\n[[path]]\nname = \"p\"\nkeys = [[0, 0, 0, 0, 1], [1, 0, 0]]\n") ==
+              "s.toml:4:9: a path key must be [t, x, y] or [t, x, y, angle], got 5 numbers");
+        CHECK(errorOf("name = \"x\"\n[[segment]]\na = [0, 0]\nb = [1, 0]\npivot = 1.5\n") ==
+              "s.toml:5:9: pivot must be between 0 and 1, got 1.5");
+    }
     SECTION("an unknown path suggests the closest defined one") {
         CHECK(errorOf(path + "[[circle]]\nposition = [0, 0]\nradius = 1\npath = \"lfit\"\n") ==
               "s.toml:9:8: unknown path 'lfit' (did you mean 'lift'?)");
@@ -249,7 +262,7 @@ TEST_CASE("paths: bodies refer to them by name, and they must exist", "[paths]")
         CHECK(errorOf("name = \"x\"\n[[path]]\nname = \"p\"\nkeys = [[0, 0, 0]]\n") ==
               "s.toml:4:8: keys must hold at least 2 keys [t, x, y], got 1");
         CHECK(errorOf("name = \"x\"\n[[path]]\nname = \"p\"\nkeys = [[0, 0, 0], [1, 0]]\n") ==
-              "s.toml:4:20: a path key must be [t, x, y], got 2 numbers");
+              "s.toml:4:20: a path key must be [t, x, y] or [t, x, y, angle], got 2 numbers");
         CHECK(errorOf("name = \"x\"\n[[path]]\nname = \"p\"\nkeys = [[-1, 0, 0], [1, 0, 0]]\n") ==
               "s.toml:4:10: path key times must be at least 0, got -1");
     }

@@ -11,7 +11,7 @@ constexpr std::string_view kCircleKeys[] = {"position", "velocity", "angular_vel
                                             "bounciness", "friction", "motion", "path"};
 constexpr std::string_view kGridKeys[] = {"origin", "columns", "rows", "spacing", "stagger", "velocity", "angular_velocity",
                                           "inertia", "radius", "mass", "bounciness", "friction", "motion", "path"};
-constexpr std::string_view kSegmentKeys[] = {"a", "b", "radius", "bounciness", "friction", "path", "surface_speed"};
+constexpr std::string_view kSegmentKeys[] = {"a", "b", "radius", "bounciness", "friction", "path", "surface_speed", "pivot"};
 // A name is how goals and scripts refer to a body; it is not offered in a physics scene's key lists.
 constexpr std::string_view kNameKey[] = {"name"};
 constexpr std::string_view kMotionNames[] = {"dynamic", "kinematic", "static"};
@@ -114,6 +114,7 @@ void readSegment(const toml::table& table, SceneReading& reading) {
     const std::string name = readBodyName(segment, reading);
     if (const auto path = readPathReference(segment, reading)) def.path = *path;
     if (const auto v = segment.number("surface_speed")) def.surfaceSpeed = *v;
+    if (const auto v = segment.number("pivot", NumberRange::unit())) def.pivotAlong = *v;
     if (a && b && *a == *b) {
         // A segment of zero length has no direction, so no normal to bounce off.
         segment.error(segment.valuePlace("b"), "b must differ from a: the segment has zero length");

@@ -4,6 +4,7 @@
 #include "scene_reading.hpp"
 
 #include <algorithm>
+#include <numbers>
 
 namespace rube::game {
 
@@ -106,7 +107,8 @@ void readWorld(TableReader& root, SceneDesc& scene) {
     }
 }
 
-// The keys of a path: [[t, x, y], ...] with t increasing, at least two of them.
+// The keys of a path: [[t, x, y], ...] with t increasing, at least two of them; a fourth number is the
+// angle, in degrees, a segment on the path has turned about its pivot by then (a rotating paddle).
 std::optional<KinematicPath> readKeys(TableReader& path) {
     const toml::node* node = path.get("keys", Need::required);
     if (!node) return std::nullopt;
@@ -123,8 +125,8 @@ std::optional<KinematicPath> readKeys(TableReader& path) {
     bool ok = true;
     for (const toml::node& element : *array) {
         const auto* key = element.as_array();
-        if (!key || key->size() != 3) {
-            path.error(placeOf(element.source()), "a path key must be [t, x, y], got " +
+        if (!key || key->size() < 3 || key->size() > 4) {
+            path.error(placeOf(element.source()), "a path key must be [t, x, y] or [t, x, y, angle], got " +
                                                       (key ? std::to_string(key->size()) + " numbers" : std::string(typeName(element))));
             ok = false;
             continue;
@@ -132,7 +134,8 @@ std::optional<KinematicPath> readKeys(TableReader& path) {
         const auto t = readNumber(*key->get(0), "a path key's t", path.diagnostics());
         const auto x = readNumber(*key->get(1), "a path key's x", path.diagnostics());
         const auto y = readNumber(*key->get(2), "a path key's y", path.diagnostics());
-        if (!t || !x || !y) {
+        const auto angle = key->size() == 4 ? readNumber(*key->get(3), "a path key's angle", path.diagnostics()) : std::optional<double>{0.0};
+        if (!t || !x || !y || !angle) {
             ok = false;
             continue;
         }
@@ -145,7 +148,7 @@ std::optional<KinematicPath> readKeys(TableReader& path) {
             path.error(placeOf(key->get(0)->source()), "path key times must be at least 0, got " + formatNumber(*t));
             ok = false;
         }
-        result.keys.push_back({*t, {*x, *y}});
+        result.keys.push_back({*t, {*x, *y}, *angle * std::numbers::pi / 180.0});
     }
     if (!ok) return std::nullopt;
     return result;

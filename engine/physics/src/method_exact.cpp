@@ -6,6 +6,7 @@
 // search for the rest of the step, and pushed apart at its end. Meant for sparse scenes: every
 // event costs an O(n^2) search, and a pile of many balls is the solver method's job.
 #include "block_pairs.hpp"
+#include "kinematic_pose.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -132,7 +133,7 @@ private:
             for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
                 const Segment& s = ctx.segments[k];
                 if (resting(i, Other::segment, k)) continue;
-                const CircleMotion motion{c.position, c.velocity - s.velocity, c.radius, g};
+                const CircleMotion motion{c.position, c.velocity - velocityTowards(s, c.position), c.radius, g};
                 const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, horizon);
                 consider(hit, i, hit && hit->lineCap ? Other::segmentCap : Other::segment, k);
             }
@@ -186,7 +187,7 @@ private:
             if (o.motion == Motion::dynamic) dynamicOther = &o;
         } else {
             const Segment& s = ctx.segments[hit.other];
-            otherVelocity = s.velocity;
+            otherVelocity = s.velocityAt(c.position - hit.normal * c.radius); // v + omega x r on a turning segment
             bounciness = pairBounciness(c.material, s.material);
         }
         const double approach = approachSpeed(c.velocity, otherVelocity, hit.normal);
@@ -348,7 +349,7 @@ private:
             const Segment& s = ctx.segments[contact.other];
             const auto hit = circleSegmentOverlapOnSide(c.position, c.radius, s, contact.side);
             if (hit) overlap = hit->overlap;
-            otherVelocity = s.velocity;
+            otherVelocity = hit ? s.velocityAt(hit->overlap.point) : s.velocity;
             bounciness = pairBounciness(c.material, s.material);
         }
         if (!overlap) return 0.0;

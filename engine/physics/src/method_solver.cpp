@@ -7,6 +7,7 @@
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
 #include "solver_sweep.hpp"
+#include "solver_turning.hpp"
 #include "step_method.hpp"
 
 #include <algorithm>
@@ -61,6 +62,7 @@ public:
     void step(StepContext& ctx, double dt) override {
         prepareBodies(ctx, dt);
         findContacts(ctx, dt);
+        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, omega_);
         solve(ctx, dt);
         finish(ctx, dt);
     }
@@ -76,6 +78,8 @@ private:
     int circleCount_ = 0;
     int segmentCount_ = 0;
     bool fastStep_ = false; // some dynamic circle travels more than kFastTravelPerRadius radii
+    bool turning_ = false;  // some segment turns this step (a rotating paddle)
+    TurningContacts turningContacts_;
     std::vector<SolverBody> bodies_;      // circles first, then segments
     std::vector<double> inverseMass_;     // per solver body
     std::vector<double> margins_;         // per solver body: how far it may move this step, plus slop
@@ -124,6 +128,7 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     fastStep_ = false;
     anyRotation_ = false;
+    turning_ = false;
     for (int i = 0; i < circleCount_; ++i) {
         const Circle& c = ctx.circles[i];
         const bool dynamic = c.motion == Motion::dynamic && c.inverseMass > 0.0;
@@ -152,11 +157,20 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
         margins_[body] = v.length() * dt; // the circle's own margin carries the slop
         sweptSegments_[s] = {seg.a, seg.b, v * dt, seg.radius};
         const Vec2 m = v * dt;
+        double reach = seg.radius;
+        if (seg.angularVelocity != 0.0) {
+            // A turning segment's ends move up to |omega| times their distance from the pivot farther.
+            const Vec2 pivot = lerp(seg.a, seg.b, seg.pivotAlong);
+            const double turn = std::abs(seg.angularVelocity) * std::max((seg.a - pivot).length(), (seg.b - pivot).length()) * dt;
+            margins_[body] += turn;
+            reach += turn;
+            turning_ = true;
+        }
         const Vec2 lo{std::min({seg.a.x, seg.b.x, seg.a.x + m.x, seg.b.x + m.x}),
                       std::min({seg.a.y, seg.b.y, seg.a.y + m.y, seg.b.y + m.y})};
         const Vec2 hi{std::max({seg.a.x, seg.b.x, seg.a.x + m.x, seg.b.x + m.x}),
                       std::max({seg.a.y, seg.b.y, seg.a.y + m.y, seg.b.y + m.y})};
-        segmentBoxes_[s] = {lo - Vec2{seg.radius, seg.radius}, hi + Vec2{seg.radius, seg.radius}};
+        segmentBoxes_[s] = {lo - Vec2{reach, reach}, hi + Vec2{reach, reach}};
     }
 }
 
@@ -274,9 +288,10 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
             relaxContacts(contacts_, records_, bodies_, inverseMass_, gaps_, r == 0, h, k);
         }
     }
-    cache_.store(contacts_, circleCount_, segmentCount_);
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
+    if (turning_) turningContacts_.detach(contacts_);
+    cache_.store(contacts_, circleCount_, segmentCount_);
 }
 
 void SolverMethod::finish(StepContext& ctx, double dt) {

@@ -2,6 +2,7 @@
 // order moves over the step or until its first impact against the others where they are now, and
 // that impact is resolved at once. Efficient and overlap-free, but positions are slightly off: order matters.
 #include "block_pairs.hpp"
+#include "kinematic_pose.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -65,9 +66,11 @@ private:
         for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
             const Segment& s = ctx.segments[k];
             const bool scripted = s.motion() == Motion::kinematic;
-            const CircleMotion motion{c.position, c.velocity - s.velocity, c.radius, {}};
+            // A turning segment is met as translating with its surface's velocity nearest the circle.
+            const Vec2 surface = velocityTowards(s, c.position);
+            const CircleMotion motion{c.position, c.velocity - surface, c.radius, {}};
             const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, dt);
-            consider(hit, TurnImpact{{}, hit && hit->lineCap ? Other::segmentCap : Other::segment, k, s.velocity, 0.0,
+            consider(hit, TurnImpact{{}, hit && hit->lineCap ? Other::segmentCap : Other::segment, k, surface, 0.0,
                                      pairBounciness(c.material, s.material), scripted});
         }
         for (int j = 0; j < static_cast<int>(ctx.circles.size()); ++j) {

@@ -83,7 +83,7 @@ int separateOverlaps(StepContext& ctx, std::span<const Vec2> sideCentres, double
             const auto hit = circleSegmentOverlapOnSide(c.position, c.radius, s, segmentSide(before, sideCentres[i]));
             if (!hit) continue;
             c.position += hit->overlap.normal * hit->overlap.depth; // a segment has infinite mass
-            Vec2 wallVelocity = s.velocity;
+            Vec2 wallVelocity = s.velocityAt(hit->overlap.point); // v + omega x r on a turning segment
             const double approach = resolveImpact(c.velocity, c.inverseMass, wallVelocity, 0.0, hit->overlap.normal,
                                                   pairBounciness(c.material, s.material));
             note(i, hit->lineCap ? Other::segmentCap : Other::segment, k, hit->overlap, approach);

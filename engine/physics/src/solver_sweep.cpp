@@ -159,7 +159,8 @@ bool ContinuousSweep::resolve(int i, const Hit& hit, const SweepInput& in, StepC
         kind = u <= 0.0 || u >= 1.0 ? Other::segmentCap : Other::segment;
         const Vec2 away = relative - closestOnSegment(relative, seg.a, seg.b);
         normal = away.length() > 0.0 ? away.normalized() : ab.normal();
-        otherVelocity = segMove / dt;
+        // A turning segment is swept as translating with its pivot; its surface where it is met moves at v + omega x r.
+        otherVelocity = seg.angularVelocity != 0.0 ? seg.velocityAt(relative - normal * ci.radius) : segMove / dt;
         otherBounciness = seg.material.bounciness;
         ci.position = relative + segMove + normal * kClampGap;
     }

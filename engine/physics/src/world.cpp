@@ -2,6 +2,7 @@
 #include "rube/physics/world.hpp"
 
 #include "field_forces.hpp"
+#include "kinematic_pose.hpp"
 #include "rope_constraint.hpp"
 #include "step_method.hpp"
 
@@ -84,6 +85,10 @@ int World::addSegment(const SegmentDef& d) {
     s.material = d.material;
     s.path = d.path;
     s.surfaceSpeed = d.surfaceSpeed;
+    s.pivotAlong = d.pivotAlong;
+    // A paddle starts turned as its path says at t = 0 (a translating path's first offset waits for the first step, as before).
+    if (d.path >= 0 && static_cast<std::size_t>(d.path) < paths_.size() && paths_[static_cast<std::size_t>(d.path)].turns())
+        placeTurningSegment(s, paths_[static_cast<std::size_t>(d.path)], 0.0);
     segments_.push_back(s);
     return static_cast<int>(segments_.size()) - 1;
 }
@@ -150,6 +155,13 @@ void World::moveKinematicBodies() {
     for (Segment& s : segments_) {
         if (s.path < 0) continue;
         const KinematicPath& p = paths_[s.path];
+        if (p.turns()) {
+            // A paddle: set onto its path, then the pivot's chord velocity and the step's mean turn rate.
+            placeTurningSegment(s, p, time_);
+            s.velocity = (p.offsetAt(time_ + dt) - p.offsetAt(time_)) / dt;
+            s.angularVelocity = (p.angleAt(time_ + dt) - p.angleAt(time_)) / dt;
+            continue;
+        }
         const Vec2 offset = p.offsetAt(time_);
         s.a = s.originA + offset;
         s.b = s.originB + offset;
@@ -182,6 +194,8 @@ void World::step() {
     ++stats_.steps;
     // Integer step count times dt, not a running sum: the clock does not drift over long runs.
     time_ = static_cast<double>(stats_.steps) * dt;
+    // The methods only translated turning segments: the frame between steps shows them turned.
+    placeTurningSegments(segments_, paths_, time_);
     checkState();
 }
 

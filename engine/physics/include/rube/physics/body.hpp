@@ -20,10 +20,12 @@ struct Material {
     double friction = 0.0;   ///< Coulomb coefficient mu: the tangential impulse is at most mu times the normal one
 };
 
-/// One key of a scripted path: the body's offset from where it was placed, at a time in seconds.
+/// One key of a scripted path: the body's offset from where it was placed, at a time in seconds,
+/// and (segments only) the angle it has turned about its pivot by then.
 struct PathKey {
     double time = 0.0;
     Vec2 offset;
+    double angle = 0.0; ///< radians, counter-clockwise about the segment's pivot (circles ignore it)
 };
 
 /// A scripted path: offsets at key times, straight lines in between; after the last key it
@@ -33,6 +35,10 @@ struct KinematicPath {
     bool loop = false;
     /// The offset at time t (seconds since the world started).
     Vec2 offsetAt(double t) const;
+    /// The angle turned at time t, radians: straight lines between the keys, as the offset.
+    double angleAt(double t) const;
+    /// True when some key turns (a rotating paddle); a path that never turns only translates.
+    bool turns() const;
 };
 
 /// A circle. Dynamic circles move under gravity and impacts; kinematic ones follow a path.
@@ -63,7 +69,14 @@ struct Segment {
     int path = -1;
     Vec2 originA, originB;
     double surfaceSpeed = 0.0; ///< a conveyor: its surface moves along a->b at this speed, m/s (felt through friction)
+    double pivotAlong = 0.5;       ///< where along a->b it turns when its path turns: 0 at a, 1 at b
+    double angularVelocity = 0.0;  ///< omega about the pivot during the current step, rad/s (turning paths only)
     Motion motion() const { return path >= 0 ? Motion::kinematic : Motion::fixed; }
+    /// The velocity of its surface at `point`: v + omega x r, r from the pivot (lecture 3's point velocity).
+    Vec2 velocityAt(Vec2 point) const {
+        // Exactly `velocity` when it does not turn, so translating paths give bit-identical results.
+        return angularVelocity == 0.0 ? velocity : velocity + (point - lerp(a, b, pivotAlong)).perpendicular() * angularVelocity;
+    }
 };
 
 /// What a caller fills in to add a circle; the defaults give a 1 kg dynamic ball of radius 0.5 m.
@@ -88,6 +101,7 @@ struct SegmentDef {
     Material material;
     int path = -1;
     double surfaceSpeed = 0.0; ///< a conveyor's belt speed along a->b, m/s
+    double pivotAlong = 0.5;   ///< where along a->b a turning path turns it: 0 at a, 1 at b (a paddle's hinge)
 };
 
 } // namespace rube

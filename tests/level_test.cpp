@@ -6,7 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <numbers>
 #include <filesystem>
 
@@ -17,7 +19,7 @@ namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
                                "bucket", "trampoline", "balloon",       "magnet",         "fan",
-                               "rope",   "paddle"};
+                               "rope",   "paddle", "seesaw"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -358,4 +360,52 @@ TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never
     for (NamedPath& path : level.paths)
         for (PathKey& key : path.path.keys) key.angle = 8.0 * std::numbers::pi / 180.0;
     CHECK_FALSE(run(level, placed(-15.0)).goalFrame());
+}
+
+TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot; the dominoes fall in turn", "[level][seesaw]") {
+    const SceneDesc level = loadLevel("seesaw");
+    REQUIRE(level.world.method == Method::automatic);
+    // Bodies: 0 the plank, 1 the box on its right end, 2..6 the dominoes (file order); circles:
+    // 0 the marble, 1 the striker, 2 the placed heavy ball.
+    struct Played {
+        std::optional<std::int64_t> goal;
+        double plankAngle = 0.0;               // at the end, counter-clockwise
+        std::array<int, 5> fellAt{};           // the step each domino passed 45 degrees leftwards (-1: never)
+        double heavyLeftmost = 1e9;            // the heavy ball's smallest x
+    };
+    const auto playFrom = [&](std::optional<double> x) {
+        std::vector<Placement> drop;
+        if (x) drop.push_back({ItemKind::heavy, {*x, 3.0}, 0.0, "", {}});
+        REQUIRE_FALSE(checkPlacements(level, drop));
+        LevelRun run(level, drop);
+        Played played;
+        played.fellAt.fill(-1);
+        for (int i = 0; i < 480; ++i) {
+            run.step();
+            for (std::size_t d = 0; d < 5; ++d)
+                if (played.fellAt[d] < 0 && run.world().bodies()[d + 2].angle > std::numbers::pi / 4.0) played.fellAt[d] = i + 1;
+            if (x) played.heavyLeftmost = std::min(played.heavyLeftmost, run.world().circles()[2].position.x);
+        }
+        played.goal = run.goalFrame();
+        played.plankAngle = run.world().bodies()[0].angle;
+        return played;
+    };
+    const Played solved = playFrom(0.3);
+    REQUIRE(solved.goal);
+    CHECK(*solved.goal == 299);
+    // Turned over: left end down on the floor, 1.5 sin a + 0.05 cos a = 0.6, a = 0.378 rad.
+    CHECK(solved.plankAngle == Approx(0.378).margin(0.005));
+    CHECK(solved.heavyLeftmost > -0.3); // the gate stopped the heavy ball: only the striker went on
+    INFO("fell at steps " << solved.fellAt[0] << " " << solved.fellAt[1] << " " << solved.fellAt[2] << " "
+                          << solved.fellAt[3] << " " << solved.fellAt[4]);
+    CHECK(solved.fellAt[0] > 0);
+    for (std::size_t d = 1; d < 5; ++d) CHECK(solved.fellAt[d] > solved.fellAt[d - 1]); // one after another
+    CHECK(playFrom(0.8).goal);
+    CHECK_FALSE(playFrom(1.5).goal); // over the pivot: the plank does not turn
+    CHECK_FALSE(playFrom(2.7).goal); // on the low end: the ball rolls off to the right
+    // Nothing placed: the plank rests on its right end and no domino falls.
+    const Played idle = playFrom(std::nullopt);
+    CHECK_FALSE(idle.goal);
+    CHECK(idle.plankAngle == Approx(-0.378).margin(0.005));
+    for (const int step : idle.fellAt) CHECK(step < 0);
 }

@@ -26,12 +26,17 @@ std::string gnuplotQuoted(const std::filesystem::path& p) {
     return q;
 }
 
-std::string drawChart(std::span<const Row> rows, const std::vector<std::string>& sceneOrder,
-                      const std::filesystem::path& workDir, const std::filesystem::path& png) {
+std::string prepareGnuplot(const std::filesystem::path& workDir, const std::filesystem::path& png) {
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
         return "gnuplot not found (apt-get install gnuplot-nox): no chart drawn";
     std::filesystem::create_directories(workDir);
     if (png.has_parent_path()) std::filesystem::create_directories(png.parent_path());
+    return {};
+}
+
+std::string drawChart(std::span<const Row> rows, const std::vector<std::string>& sceneOrder,
+                      const std::filesystem::path& workDir, const std::filesystem::path& png) {
+    if (std::string why = prepareGnuplot(workDir, png); !why.empty()) return why;
 
     const std::filesystem::path script = workDir / "chart.gp";
     std::ofstream gp(script);

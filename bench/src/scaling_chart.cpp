@@ -16,10 +16,7 @@ namespace bench {
 
 std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::string>& scalingScenes,
                              const std::filesystem::path& workDir, const std::filesystem::path& png) {
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-        return "gnuplot not found (apt-get install gnuplot-nox): no chart drawn";
-    std::filesystem::create_directories(workDir);
-    if (png.has_parent_path()) std::filesystem::create_directories(png.parent_path());
+    if (std::string why = prepareGnuplot(workDir, png); !why.empty()) return why;
 
     // One series per engine, by body count; timed-out runs have no cost and are left out.
     std::map<std::pair<int, std::string>, std::vector<const Row*>> series;

@@ -21,32 +21,28 @@ void mix(std::uint64_t& h, double value) {
     }
 }
 
+// A moving body's state in a fixed order: position, velocity, angle, angular velocity.
+void mixMotion(std::uint64_t& h, Vec2 position, Vec2 velocity, double angle, double angularVelocity) {
+    mix(h, position.x);
+    mix(h, position.y);
+    mix(h, velocity.x);
+    mix(h, velocity.y);
+    mix(h, angle);
+    mix(h, angularVelocity);
+}
+
 } // namespace
 
 std::uint64_t stateHash(const World& world) {
     std::uint64_t h = kFnvOffset;
-    for (const Circle& c : world.circles()) {
-        mix(h, c.position.x);
-        mix(h, c.position.y);
-        mix(h, c.velocity.x);
-        mix(h, c.velocity.y);
-        mix(h, c.angle);
-        mix(h, c.angularVelocity);
-    }
+    for (const Circle& c : world.circles()) mixMotion(h, c.position, c.velocity, c.angle, c.angularVelocity);
     for (const Segment& s : world.segments()) {
         mix(h, s.a.x);
         mix(h, s.a.y);
         mix(h, s.b.x);
         mix(h, s.b.y);
     }
-    for (const RigidBody& b : world.bodies()) {
-        mix(h, b.position.x);
-        mix(h, b.position.y);
-        mix(h, b.velocity.x);
-        mix(h, b.velocity.y);
-        mix(h, b.angle);
-        mix(h, b.angularVelocity);
-    }
+    for (const RigidBody& b : world.bodies()) mixMotion(h, b.position, b.velocity, b.angle, b.angularVelocity);
     return h;
 }
 

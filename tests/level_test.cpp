@@ -19,7 +19,7 @@ namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
                                "bucket", "trampoline", "balloon",       "magnet",         "fan",
-                               "rope",   "paddle", "seesaw"};
+                               "rope",   "paddle", "seesaw", "crates"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -408,4 +408,88 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot; 
     CHECK_FALSE(idle.goal);
     CHECK(idle.plankAngle == Approx(-0.378).margin(0.005));
     for (const int step : idle.fellAt) CHECK(step < 0);
+}
+
+TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u); too low or too high a drop misses", "[level][block]") {
+    const SceneDesc level = loadLevel("crates");
+    REQUIRE(level.world.method == Method::automatic);
+    // Bodies: 0 the crate under the gate, 1 the last crate (4 kg each, C = 1); circles: 0 the flag
+    // (C = 0.5), 1 the placed steel ball (4 kg, C = 0.7).
+    const auto drop = [](double x, double y) { return std::vector<Placement>{{ItemKind::steel, {x, y}, 0.0, "", {}}}; };
+    REQUIRE_FALSE(checkPlacements(level, drop(-4.5, 5.0)));
+    LevelRun run(level, drop(-4.5, 5.0));
+    REQUIRE(run.world().circles().size() == 2);
+    REQUIRE(run.world().circles()[1].radius == 0.2);
+    REQUIRE(run.world().bodies().size() == 2);
+    const double g = run.world().def().gravity.y;
+    const auto vx = [](double mass1, double v1, double mass2, double v2, double c) {
+        const double u = (mass1 * v1 + mass2 * v2) / (mass1 + mass2); // the centre of mass's velocity
+        return std::pair{u - c * (v1 - u), u - c * (v2 - u)};            // v' = u - C (v - u) on the axis
+    };
+    int ballOnCrate = -1, crateOnCrate = -1, crateOnFlag = -1;
+    double ballAtImpact = 0.0, crateAtImpact = 0.0, flagApproach = 0.0, ballRightmost = -1e9;
+    for (int i = 0; i < 480; ++i) {
+        const Vec2 ballBefore = run.world().circles()[1].velocity;
+        const Vec2 crateBefore = run.world().bodies()[0].velocity;
+        const Vec2 lastBefore = run.world().bodies()[1].velocity;
+        run.step();
+        const Vec2 ball = run.world().circles()[1].velocity;
+        const Vec2 crate = run.world().bodies()[0].velocity;
+        const Vec2 last = run.world().bodies()[1].velocity;
+        ballRightmost = std::max(ballRightmost, run.world().circles()[1].position.x);
+        for (const Impact& impact : run.world().lastImpacts()) {
+            if (impact.body < 0 || impact.approachSpeed < 0.5) continue; // resting contacts on the shelf
+            INFO("step " << i + 1 << " block " << impact.body << " normal " << impact.normal.x << " " << impact.normal.y);
+            if (impact.body == 0 && impact.otherKind == Other::circle && impact.other == 1) {
+                // The ball meets the crate's left face: x axis only; the shelf keeps both at vy = 0.
+                ballOnCrate = i + 1;
+                ballAtImpact = ballBefore.x;
+                CHECK(impact.normal == Vec2{1.0, 0.0});
+                CHECK(crateBefore.x == 0.0);
+                const auto [ballAfter, crateAfter] = vx(4.0, ballBefore.x, 4.0, crateBefore.x, 0.7);
+                CHECK(ball.x == Approx(ballAfter).epsilon(1e-12));   // 0.15 v
+                CHECK(crate.x == Approx(crateAfter).epsilon(1e-12)); // 0.85 v
+                CHECK(ball.x == Approx(0.15 * ballBefore.x).epsilon(1e-12));
+            } else if (impact.body == 0 && impact.otherKind == Other::body && impact.other == 1) {
+                // Equal masses, C = 1: the crate stops dead and the last crate takes all its velocity.
+                crateOnCrate = i + 1;
+                crateAtImpact = crateBefore.x;
+                CHECK(impact.normal == Vec2{-1.0, 0.0});
+                const auto [crateAfter, lastAfter] = vx(4.0, crateBefore.x, 4.0, lastBefore.x, 1.0);
+                CHECK(crate.x == Approx(crateAfter).margin(1e-12));
+                CHECK(crate.x == Approx(0.0).margin(1e-12));
+                CHECK(last.x == Approx(lastAfter).epsilon(1e-12));
+                CHECK(last.x == Approx(crateBefore.x).epsilon(1e-12));
+            } else if (impact.body == 1 && impact.otherKind == Other::circle && impact.other == 0 && crateOnFlag < 0) {
+                // The last crate lands on the flag from above: y axis only, vx kept, vy' = -C vy with
+                // C = 1 x 0.5, then gravity for the rest of the step.
+                crateOnFlag = i + 1;
+                flagApproach = impact.approachSpeed;
+                CHECK(impact.normal == Vec2{0.0, 1.0});
+                CHECK(last.x == lastBefore.x);
+                CHECK(last.y == Approx(0.5 * impact.approachSpeed + g * (run.world().time() - impact.time)).epsilon(1e-12));
+            }
+        }
+    }
+    INFO("ball on crate at step " << ballOnCrate << " (" << ballAtImpact << " m/s), crate on crate at step " << crateOnCrate
+                                  << " (" << crateAtImpact << " m/s), crate on flag at step " << crateOnFlag << " (" << flagApproach << " m/s)");
+    CHECK(ballOnCrate == 83);
+    CHECK(crateOnCrate == 99);
+    CHECK(crateOnFlag == 146);
+    CHECK(crateAtImpact == Approx(0.85 * ballAtImpact).epsilon(1e-12));
+    REQUIRE(run.goalFrame());
+    CHECK(*run.goalFrame() == 146);
+    CHECK(run.world().stats().autoSolverSteps == 0); // nothing has friction: every step was exact
+    CHECK(ballRightmost < -1.2);                     // the gate held the ball: only a crate reached the flag
+    const auto played = [&](std::vector<Placement> placements) {
+        REQUIRE_FALSE(checkPlacements(level, placements));
+        LevelRun r(level, placements);
+        for (int i = 0; i < 480; ++i) r.step();
+        return r.goalFrame();
+    };
+    CHECK(played(drop(-4.5, 5.5)));
+    CHECK_FALSE(played(drop(-4.5, 4.0))); // 3.14 m/s: lands on the wall's top and skims past the flag
+    CHECK_FALSE(played(drop(-4.5, 6.0))); // 3.98 m/s: flies over the flag
+    CHECK_FALSE(played(drop(-3.0, 4.0))); // over the shelf: the ball lands dead and never moves
+    CHECK_FALSE(played({}));
 }

@@ -77,3 +77,4 @@ TEST_CASE("fan: first and goal frames", "[screenshot][level]") { checkLevel("fan
 TEST_CASE("rope: first and goal frames", "[screenshot][level]") { checkLevel("rope"); }
 TEST_CASE("paddle: first and goal frames", "[screenshot][level]") { checkLevel("paddle"); }
 TEST_CASE("seesaw: first and goal frames", "[screenshot][level]") { checkLevel("seesaw"); }
+TEST_CASE("water: first and goal frames", "[screenshot][level]") { checkLevel("water"); }

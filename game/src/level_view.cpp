@@ -92,6 +92,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
         const bool thin = s.radius * ppm < 0.5 * kThinLine;
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius), style("ground", "ground_outline", thin ? kThinLine : kOutline));
     }
+    drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.

@@ -146,6 +146,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     list.background = palette["background"];
     // Back to front: walls, then where balls have been, the balls, and the debug marks on top.
     drawSegments(world, list);
+    drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);

@@ -129,6 +129,36 @@ TEST_CASE("fields: a thruster gives F t / m over the time it burns, even mid-ste
     CHECK(world.circles()[rocket].velocity.x == Approx(7.5).epsilon(1e-12));
 }
 
+TEST_CASE("fields: a thruster moves a body x = F t^2 / (2m) exactly, and coasts once burnt out", "[fields][thruster]") {
+    // F = 10 N on m = 2 kg, no gravity: a = 5 m/s^2. It lights at t = 0 and burns T = 1.2345 s, so
+    // it goes out a part of the way through step 74 (T / dt = 74.07); after that it coasts at a T.
+    const double force = 10.0, m = 2.0, a = force / m, burn = 1.2345;
+    World world = openWorld(Method::exact, {0.0, 0.0});
+    const int rocket = addBall(world, m);
+    world.fields().thrusters.push_back(Thruster{rocket, {force, 0.0}, 0.0, burn});
+    double worstBurning = 0.0, worstCoasting = 0.0;
+    for (int i = 0; i < 240; ++i) {
+        world.step();
+        const double t = world.time(), x = world.circles()[rocket].position.x;
+        if (t <= burn) {
+            // x = F t^2 / (2m), v = F t / m while it burns.
+            worstBurning = std::max(worstBurning, std::abs(x - 0.5 * a * t * t) / (0.5 * a * t * t));
+            CHECK(world.circles()[rocket].velocity.x == Approx(a * t).epsilon(1e-9));
+        } else {
+            // Burnt out: x = a T^2 / 2 + a T (t - T), v = a T.
+            const double expected = 0.5 * a * burn * burn + a * burn * (t - burn);
+            worstCoasting = std::max(worstCoasting, std::abs(x - expected) / expected);
+            CHECK(world.circles()[rocket].velocity.x == Approx(a * burn).epsilon(1e-12));
+        }
+        CHECK(world.circles()[rocket].position.y == 0.0);
+    }
+    INFO("worst relative error while burning " << worstBurning << ", coasting " << worstCoasting);
+    CHECK(worstBurning < 1e-9);
+    CHECK(worstCoasting < 1e-9);
+    // At t = 4 s: 20.88 m; a burn that never ended would have carried it a t^2 / 2 = 40 m.
+    CHECK(world.circles()[rocket].position.x == Approx(0.5 * a * burn * burn + a * burn * (4.0 - burn)).epsilon(1e-9));
+}
+
 TEST_CASE("fields: a world without fields moves exactly as before", "[fields]") {
     // The pass is skipped, not run with zeros: states are bit-identical to a plain fall.
     World plain = openWorld(Method::exact);

@@ -78,3 +78,4 @@ TEST_CASE("rope: first and goal frames", "[screenshot][level]") { checkLevel("ro
 TEST_CASE("paddle: first and goal frames", "[screenshot][level]") { checkLevel("paddle"); }
 TEST_CASE("seesaw: first and goal frames", "[screenshot][level]") { checkLevel("seesaw"); }
 TEST_CASE("crates: first and goal frames", "[screenshot][level]") { checkLevel("crates"); }
+TEST_CASE("water: first and goal frames", "[screenshot][level]") { checkLevel("water"); }

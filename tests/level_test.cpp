@@ -19,7 +19,7 @@ namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
                                "bucket", "trampoline", "balloon",       "magnet",         "fan",
-                               "rope",   "paddle", "seesaw", "crates"};
+                               "rope",   "paddle", "seesaw", "crates", "water"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));
@@ -73,16 +73,16 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
     CHECK(firstError(floor + "[[item]]\nkind = \"plank\"\nposition = [0, 1]\nangel = 30\n") ==
           "t.toml:8:1: unknown key 'angel' in [[item]] of kind 'plank' (did you mean 'angle'?)");
     CHECK(firstError(floor + "[[item]]\nkind = \"cannnon\"\nposition = [0, 1]\n") ==
-          "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, magnet, fan, got 'cannnon' (did you mean 'cannon'?)");
+          "t.toml:6:8: kind must be one of heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, magnet, fan, rocket, got 'cannnon' (did you mean 'cannon'?)");
     CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
           "t.toml:12:10: unknown target 'U' (the level has: T)");
     CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
-          "t.toml:8:12: unknown cannon, bomb, fan or magnet 'gun' (the level has no cannon, bomb, fan or magnet)");
+          "t.toml:8:12: unknown cannon, bomb, fan, magnet or rocket 'gun' (the level has no cannon, bomb, fan, magnet or rocket)");
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
           "t.toml:8:12: strength must be between 0 and 10000, got -2");
     CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
     CHECK(firstError(floor + "[inventory]\ncannon = 1\n") ==
-          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb, magnet, fan)");
+          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb, magnet, fan, rocket)");
     CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = \"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
           "t.toml:11:8: the name 'a' is already used at line 6");
 }
@@ -340,7 +340,7 @@ TEST_CASE("rope: a switch may name a rope; a name that is neither item nor rope 
                              "[[rope]]\nname = \"line\"\ncircle = \"bob\"\nanchor = [0, 3]\n"
                              "[[item]]\nkind = \"switch\"\nposition = [3, 0]\n";
     CHECK(firstError(base + "triggers = \"line\"\n") == "no error");
-    CHECK(firstError(base + "triggers = \"lnie\"\n").starts_with("t.toml:13:12: unknown cannon, bomb, fan or magnet 'lnie'"));
+    CHECK(firstError(base + "triggers = \"lnie\"\n").starts_with("t.toml:13:12: unknown cannon, bomb, fan, magnet or rocket 'lnie'"));
 }
 
 TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never turns never throws the wheel", "[level][kinematic]") {

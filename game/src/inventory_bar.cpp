@@ -131,6 +131,10 @@ void drawItemIcon(ItemKind kind, Vec2 centre, double size, bool available, rende
         list.box({c.x - 0.5f * r, c.y}, {0.25f * r, 0.8f * r}, 0.0f, look("box", "box_outline"));
         list.arrow({c.x - 0.1f * r, c.y}, {c.x + r, c.y}, 2.0f, palette["arrow"]);
         break;
+    case ItemKind::rocket:
+        list.circle(c, 0.7f * r, look("box", "ball_outline"));
+        list.arrow({c.x - 0.5f * r, c.y}, {c.x + r, c.y}, 2.0f, palette["explosion"]);
+        break;
     default: list.circle(c, 0.8f * r, ball); break;
     }
 }

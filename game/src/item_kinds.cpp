@@ -4,13 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rube::game {
 
 namespace {
 
 constexpr std::string_view kNames[] = {"heavy", "bouncy", "steel", "balloon", "plank",  "ramp",
-                                       "bumper", "cannon", "bomb",  "target",  "bucket", "switch", "magnet", "fan"};
+                                       "bumper", "cannon", "bomb",  "target",  "bucket", "switch", "magnet", "fan", "rocket"};
 
 // A kind's defaults. A pair's bounciness is the product of both (lecture 3), so a dull heavy
 // ball stays dull on a lively plank and a bouncy ball stays lively on a bumper.
@@ -36,6 +37,7 @@ KindDefaults defaultsOf(ItemKind kind) {
     case ItemKind::switchItem: return {0.2, 0.0, 0.5};
     case ItemKind::magnet: return {0.25, 0.0, 0.3};
     case ItemKind::fan: return {1.2, 0.0, 0.3};
+    case ItemKind::rocket: return {0.25, 1.0, 0.3};
     }
     return {0.3, 1.0, 0.5};
 }
@@ -51,6 +53,9 @@ constexpr double kFanSpeed = 10.0;
 constexpr double kFanReach = 5.0;
 constexpr double kFanDrag = 3.0;
 constexpr double kMagnetReach = 3.0;
+// A rocket's thruster: 15 N on its 1 kg lifts it against gravity at about 5 m/s^2, for 2 s.
+constexpr double kRocketThrust = 15.0;
+constexpr double kRocketBurn = 2.0;
 
 // A fan's housing: a board across its face, `size` wide, turned to blow along its angle.
 std::pair<Vec2, Vec2> fanEnds(const ItemDesc& item) {
@@ -80,7 +85,7 @@ bool isBall(ItemKind kind) {
 
 bool isPlaceable(ItemKind kind) {
     return isBall(kind) || kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::bumper ||
-           kind == ItemKind::bomb || kind == ItemKind::magnet || kind == ItemKind::fan;
+           kind == ItemKind::bomb || kind == ItemKind::magnet || kind == ItemKind::fan || kind == ItemKind::rocket;
 }
 
 ItemDesc defaultItem(ItemKind kind, Vec2 position) {
@@ -93,6 +98,8 @@ ItemDesc defaultItem(ItemKind kind, Vec2 position) {
     item.blastRadius = 2.0;
     item.strength = kind == ItemKind::magnet ? kMagnetStrength : 6.0;
     item.reach = kind == ItemKind::fan ? kFanReach : kMagnetReach;
+    item.thrust = kRocketThrust;
+    item.burn = kRocketBurn;
     // A placed bomb has no fuse or switch to wait for: it goes off when something hits it.
     item.trigger = Trigger::impact;
     return item;
@@ -146,6 +153,22 @@ ItemBodies itemBodies(const ItemDesc& item) {
         wind.drag = kFanDrag;
         wind.on = item.on;
         bodies.wind = wind;
+        break;
+    }
+    case ItemKind::rocket: {
+        CircleDef body;
+        body.position = item.position;
+        body.velocity = item.velocity;
+        body.radius = item.size;
+        body.mass = defaults.mass;
+        body.material = material;
+        bodies.circles.push_back(body);
+        // Lit at the start it burns [0, burn); unlit, it waits (start and end at infinity) for a switch or click.
+        Thruster thruster;
+        thruster.force = Vec2::fromAngle(item.angle) * item.thrust;
+        thruster.start = item.on ? 0.0 : std::numeric_limits<double>::infinity();
+        thruster.end = item.on ? item.burn : std::numeric_limits<double>::infinity();
+        bodies.thruster = thruster;
         break;
     }
     case ItemKind::magnet:

@@ -15,7 +15,7 @@
 namespace rube::game {
 
 /// The kinds of item, in the order their names are listed in messages.
-enum class ItemKind : std::uint8_t { heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switchItem, magnet, fan };
+enum class ItemKind : std::uint8_t { heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switchItem, magnet, fan, rocket };
 
 /// How a bomb goes off.
 enum class Trigger : std::uint8_t { timer, impact, switchHit };
@@ -26,7 +26,7 @@ struct ItemDesc {
     std::string name;            ///< unique among the level's names; may be empty for balls and planks
     ItemKind kind = ItemKind::heavy;
     Vec2 position;               ///< centre; a bucket's is the middle of its floor
-    double angle = 0.0;          ///< planks and ramps: tilt; cannons: aim; fans: the way they blow (radians, counter-clockwise from +x)
+    double angle = 0.0;          ///< planks and ramps: tilt; cannons: aim; fans: the way they blow; rockets: the way they push (radians, counter-clockwise from +x)
     double size = 0.0;           ///< radius of balls, bumpers, targets, switches, bombs, magnets; length of planks; width of buckets and fans
     double height = 0.0;         ///< bucket walls, m
     Vec2 velocity;               ///< balls: initial velocity, m/s
@@ -36,7 +36,9 @@ struct ItemDesc {
     double blastRadius = 0.0;    ///< bomb: bodies whose centre is closer are pushed, m
     double strength = 0.0;       ///< bomb: impulse at the centre, N s; magnet: pull at 1 m, N m^2
     double reach = 0.0;          ///< magnet: no pull this far or farther; fan: length of its air column, m
-    bool on = true;              ///< magnet, fan: working from the start (a switch flips it)
+    bool on = true;              ///< magnet, fan: working from the start (a switch flips it); rocket: lit at the start (else a switch or click lights it)
+    double thrust = 0.0;         ///< rocket: the thruster's constant force along `angle`, N
+    double burn = 0.0;           ///< rocket: how long the thruster burns once lit, s
     Trigger trigger = Trigger::impact; ///< bomb: what sets it off
     double fuse = 0.0;           ///< bomb with a timer: seconds from the start
     std::string triggers;        ///< switch: the name of the cannon or bomb it sets off, the fan or magnet it flips, or the [[rope]] it cuts
@@ -84,7 +86,7 @@ std::string itemReferenceError(const LevelDesc& level, std::string_view key, std
 inline constexpr ItemKind kAllItemKinds[] = {ItemKind::heavy, ItemKind::bouncy, ItemKind::steel, ItemKind::balloon,
                                              ItemKind::plank, ItemKind::ramp,   ItemKind::bumper, ItemKind::cannon,
                                              ItemKind::bomb,  ItemKind::target, ItemKind::bucket, ItemKind::switchItem,
-                                             ItemKind::magnet, ItemKind::fan};
+                                             ItemKind::magnet, ItemKind::fan, ItemKind::rocket};
 /// True for the kinds that are one dynamic ball.
 bool isBall(ItemKind kind);
 /// True for the kinds a player may place from the inventory.
@@ -93,13 +95,14 @@ bool isPlaceable(ItemKind kind);
 ItemDesc defaultItem(ItemKind kind, Vec2 position);
 
 /// The physics bodies one item adds: nothing for a cannon, one circle for balls, bumpers, bombs,
-/// targets, switches and magnets, one segment for planks, ramps and a fan's housing, three segments
-/// for a bucket; and the field of a magnet or a fan.
+/// targets, switches, magnets and rockets, one segment for planks, ramps and a fan's housing, three segments
+/// for a bucket; and the field of a magnet, a fan or a rocket.
 struct ItemBodies {
     std::vector<CircleDef> circles;   ///< in order
     std::vector<SegmentDef> segments; ///< in order
     std::optional<Magnet> magnet;     ///< a magnet's pull
     std::optional<Wind> wind;         ///< a fan's air column
+    std::optional<Thruster> thruster; ///< a rocket's thruster (its circle index is set when it joins a World)
 };
 /// The bodies of `item`.
 ItemBodies itemBodies(const ItemDesc& item);

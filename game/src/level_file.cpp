@@ -18,6 +18,7 @@ constexpr std::string_view kBucketKeys[] = {"kind", "name", "position", "width",
 constexpr std::string_view kSwitchKeys[] = {"kind", "name", "position", "radius", "triggers"};
 constexpr std::string_view kMagnetKeys[] = {"kind", "name", "position", "radius", "strength", "reach", "on"};
 constexpr std::string_view kFanKeys[] = {"kind", "name", "position", "angle", "width", "speed", "reach", "on"};
+constexpr std::string_view kRocketKeys[] = {"kind", "name", "position", "radius", "velocity", "angle", "thrust", "burn", "on"};
 constexpr std::string_view kZoneKeys[] = {"min", "max"};
 constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "time_limit"};
 constexpr std::string_view kTriggerNames[] = {"timer", "impact", "switch"};
@@ -39,6 +40,7 @@ std::span<const std::string_view> keysOf(ItemKind kind) {
     case ItemKind::switchItem: return kSwitchKeys;
     case ItemKind::magnet: return kMagnetKeys;
     case ItemKind::fan: return kFanKeys;
+    case ItemKind::rocket: return kRocketKeys;
     default: return kBallKeys;
     }
 }
@@ -124,6 +126,14 @@ void readKindFields(TableReader& table, ItemDesc& item, SceneReading& reading) {
         if (const auto w = table.number("width", kSizeRange)) item.size = *w;
         if (const auto s = table.number("speed", NumberRange{0.0, 100.0, true})) item.speed = *s;
         if (const auto r = table.number("reach", kSizeRange)) item.reach = *r;
+        if (const auto on = table.boolean("on")) item.on = *on;
+        break;
+    case ItemKind::rocket:
+        if (const auto r = table.number("radius", kSizeRange)) item.size = *r;
+        if (const auto v = table.vec2("velocity")) item.velocity = *v;
+        if (const auto a = table.number("angle", NumberRange{-360.0, 360.0})) item.angle = *a * std::numbers::pi / 180.0;
+        if (const auto f = table.number("thrust", NumberRange{0.0, 10000.0, true})) item.thrust = *f;
+        if (const auto t = table.number("burn", NumberRange{0.0, 1000.0, true})) item.burn = *t;
         if (const auto on = table.boolean("on")) item.on = *on;
         break;
     default: // balls and bumpers
@@ -244,7 +254,7 @@ void readLevel(TableReader& root, SceneReading& reading) {
         if (target.empty() || reading.scene.findRope(target) >= 0) continue; // a switch may cut a named [[rope]]
         const toml::node* node = table->get("triggers");
         checkReference(reading.diag, node ? placeOf(node->source()) : placeOf(table->source()), "triggers", target,
-                       {ItemKind::cannon, ItemKind::bomb, ItemKind::fan, ItemKind::magnet}, reading.scene.level);
+                       {ItemKind::cannon, ItemKind::bomb, ItemKind::fan, ItemKind::magnet, ItemKind::rocket}, reading.scene.level);
     }
 }
 

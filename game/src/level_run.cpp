@@ -54,6 +54,11 @@ void LevelRun::addItem(const ItemDesc& item) {
         state.field = static_cast<int>(fields.winds.size());
         fields.winds.push_back(*bodies.wind);
     }
+    if (bodies.thruster) {
+        state.field = static_cast<int>(fields.thrusters.size());
+        fields.thrusters.push_back(*bodies.thruster);
+        fields.thrusters.back().circle = state.firstCircle;
+    }
     items_.push_back(item);
     states_.push_back(state);
 }
@@ -170,6 +175,14 @@ void LevelRun::toggle(int item) {
     else if (kind == ItemKind::bomb) detonate(target);
     else if (kind == ItemKind::magnet) world_.fields().magnets[static_cast<std::size_t>(field)].on ^= true;
     else if (kind == ItemKind::fan) world_.fields().winds[static_cast<std::size_t>(field)].on ^= true;
+    else if (kind == ItemKind::rocket) {
+        // A rocket lights once, now, and burns its full time; lit or burnt out, it cannot be lit again.
+        Thruster& thruster = world_.fields().thrusters[static_cast<std::size_t>(field)];
+        if (std::isinf(thruster.start)) {
+            thruster.start = world_.time();
+            thruster.end = world_.time() + items_[static_cast<std::size_t>(target)].burn;
+        }
+    }
 }
 
 void LevelRun::cutRope(std::string_view name) {

@@ -36,7 +36,7 @@ struct ItemState {
     bool fired = false;         ///< cannons: have shot
     std::optional<double> timedShot; ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
-    int field = -1;             ///< magnets and fans: index of their Magnet or Wind in the World's fields
+    int field = -1;             ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
 };
 
 /// A level in play. Placements must have passed checkPlacements().
@@ -90,7 +90,8 @@ public:
     /// Sets a bomb off now.
     void detonate(int bomb);
     /// Flips a switch as if a ball had hit it (the cannon or bomb it names goes off, the fan or magnet it
-    /// names turns on or off, the rope it names is cut), or turns a fan or magnet itself on or off.
+    /// names turns on or off, the rope it names is cut, the rocket it names lights), or turns a fan or magnet
+    /// itself on or off, or lights a rocket.
     void toggle(int item);
     /// Cuts the [[rope]] called `name` (a cut rope stays cut; an unknown name does nothing).
     void cutRope(std::string_view name);

@@ -30,6 +30,9 @@ constexpr double kBarrelHalfWidth = 0.1;
 constexpr double kArrowSeconds = 0.15; // a projectile's arrow shows where it will be this much later
 constexpr double kWindSpacing = 0.8;  // m between a fan's arrows, along and across its column
 constexpr double kWindArrow = 0.35;   // m: each arrow's length
+constexpr double kFlameLength = 1.6;  // a rocket's flame, in its radii beyond the body ...
+constexpr double kFlameFlicker = 0.4; // ... give or take this much ...
+constexpr double kFlameRate = 37.0;   // ... at this many radians per second of world time
 constexpr int kHudMargin = 8;
 constexpr int kHudScale = 2;
 constexpr int kHudLineHeight = 18;    // pixels between the HUD's two lines
@@ -50,6 +53,16 @@ void drawWind(const Wind& wind, double time, render::DrawList& list) {
             list.arrow(pt(tail), pt(tail + wind.direction * kWindArrow), 2.0f, color);
         }
     }
+}
+
+// A rocket's flame while it burns: a triangle from the back of its body, pointing against the thrust,
+// flickering in length with the world time (never the wall clock) so frames stay reproducible.
+void drawFlame(Vec2 centre, double radius, Vec2 direction, double time, render::DrawList& list) {
+    const double length = radius * (kFlameLength + kFlameFlicker * std::sin(kFlameRate * time));
+    const Vec2 back = centre - direction * (0.6 * radius), across = direction.perpendicular() * (0.55 * radius);
+    const Point flame[] = {pt(back + across), pt(back - direction * (0.4 * radius + length)), pt(back - across)};
+    const Palette& p = Palette::greybox();
+    list.polygon(flame, {p["flame"], p["explosion"], 1.0f});
 }
 
 Style style(const char* fill, const char* outline, float width = kOutline) {
@@ -79,6 +92,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
         const bool thin = s.radius * ppm < 0.5 * kThinLine;
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius), style("ground", "ground_outline", thin ? kThinLine : kOutline));
     }
+    drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
@@ -160,6 +174,17 @@ void LevelView::drawItems(const LevelRun& run, render::DrawList& list) const {
             if (wind.on) drawWind(wind, world.time(), list);
             break;
         }
+        case ItemKind::rocket: {
+            const Circle& c = world.circles()[static_cast<std::size_t>(state.firstCircle)];
+            const Thruster& thruster = world.fields().thrusters[static_cast<std::size_t>(state.field)];
+            const Vec2 direction = Vec2::fromAngle(item.angle);
+            const double t = world.time();
+            if (t >= thruster.start && t < thruster.end) drawFlame(c.position, c.radius, direction, t, list);
+            // Its body with an arrow through it: the way the thrust pushes, lit or not.
+            list.circle(pt(c.position), static_cast<float>(c.radius), style("box", "ball_outline"));
+            list.arrow(pt(c.position - direction * (0.7 * c.radius)), pt(c.position + direction * (0.9 * c.radius)), 2.5f, palette["explosion"]);
+            break;
+        }
         case ItemKind::bucket: {
             const bool isGoal = goal && goal->kind == GoalKind::ballInBucket && goal->item == item.name;
             const double h = 0.5 * item.size;
@@ -206,6 +231,8 @@ void LevelView::draw(const LevelRun& run, std::int64_t frame, render::DrawList& 
     list.background = Palette::greybox()["background"];
     drawBodies(run, list);
     drawItems(run, list);
+    // Water in front of balls and items, as in the scene view: a floating ball shows how deep it sits.
+    drawWaters(run.world(), list);
     drawHud(run, frame, list);
 }
 

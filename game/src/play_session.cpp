@@ -46,7 +46,7 @@ double normalDegrees(double degrees) {
     return degrees;
 }
 
-bool turns(ItemKind kind) { return kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::fan; }
+bool turns(ItemKind kind) { return kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::fan || kind == ItemKind::rocket; }
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 ab = b - a;
@@ -471,7 +471,7 @@ void PlaySession::takeByHand(ActionKind kind, int item) {
 }
 
 void PlaySession::useItemAtCursor() {
-    const int item = levelItemAtCursor({ItemKind::cannon, ItemKind::bomb, ItemKind::switchItem, ItemKind::fan, ItemKind::magnet});
+    const int item = levelItemAtCursor({ItemKind::cannon, ItemKind::bomb, ItemKind::switchItem, ItemKind::fan, ItemKind::magnet, ItemKind::rocket});
     if (item < 0) return;
     const ItemDesc& desc = level_.level.items[static_cast<std::size_t>(item)];
     const ItemState& state = run_->states()[static_cast<std::size_t>(item)];

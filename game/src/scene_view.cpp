@@ -146,15 +146,13 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     list.background = palette["background"];
     // Back to front: walls, then where balls have been, the balls, and the debug marks on top.
     drawSegments(world, list);
+    drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.
-    for (const Water& water : world.fields().waters) {
-        const Vec2 centre = (water.min + water.max) * 0.5, half = (water.max - water.min) * 0.5;
-        list.box(toPoint(centre), toPoint(half), 0.0f, {palette["water"], palette["water"].withAlpha(0xc0), 2.0f});
-    }
+    drawWaters(world, list);
     if (impacts_) impacts_->draw(list, world.time(), camera_.pixelsPerMetre(frame_), palette["impact"], palette["arrow"]);
     drawHud(hudLine(world, frame), list);
 }

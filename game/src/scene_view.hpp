@@ -21,6 +21,12 @@ void drawRopes(const World& world, render::DrawList& list);
 /// Draws every box (a turned rectangle) and capsule with a line along its own x axis, and every pivot's pin.
 void drawRigidBodies(const World& world, render::DrawList& list);
 
+/// Draws chevrons along every conveyor (a segment with a surface speed), pointing the way its
+/// surface runs and travelling at that speed with the world's time, so a still belt and a running one differ.
+void drawConveyors(const World& world, render::DrawList& list);
+/// Draws every pool of water as a translucent band, its top edge the surface; drawn in front of what floats in it.
+void drawWaters(const World& world, render::DrawList& list);
+
 /// What a view draws besides the bodies; a caller changes only what it needs.
 struct ViewOptions {
     bool trails = false;         ///< --trails: each dynamic circle's recent path (the lecture's debug key D)

@@ -122,7 +122,7 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     }
     case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
     case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
-    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem, ItemKind::fan, ItemKind::magnet}); break;
+    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem, ItemKind::fan, ItemKind::magnet, ItemKind::rocket}); break;
     case ActionKind::cut:
         // Ropes are not items: they are the level's [[rope]] tables, named there.
         if (level.findRope(a.item) < 0) {

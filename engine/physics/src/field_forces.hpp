@@ -13,4 +13,12 @@ namespace rube {
 void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag& airDrag, Vec2 gravity, double time,
                  double dt);
 
+/// Which part of a thruster's impulse over a step: the kick before the method moves the bodies, or the rest after.
+enum class BurnShare { beforeMove, afterMove };
+
+/// Changes the velocity of each thruster's circle by its share of F tau / m over [time, time + dt]
+/// (tau: how long it burns in the step), split so that the method's constant-velocity move between
+/// the two shares gives the exact displacement of a constant force. applyFields does the first share.
+void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, double time, double dt, BurnShare share);
+
 } // namespace rube

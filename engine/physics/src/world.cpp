@@ -185,6 +185,8 @@ void World::step() {
     const bool hasRopes = !ropes_.empty();
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);
     method_->step(context, dt);
+    // The rest of each thruster's impulse, after the move (see kickThrusters): exact for a constant force.
+    if (!fields_.thrusters.empty()) kickThrusters(circles_, fields_.thrusters, time_, dt, BurnShare::afterMove);
     if (hasRopes) enforceRopes(circles_, ropes_, ropeStarts_, impacts_, dt);
     // Methods that do not model friction cannot change a spin; it carries the angle on (none of
     // them pays for it unless something spins).

@@ -280,3 +280,19 @@ TEST_CASE("play: a loaded solution plays to its goal and records an expectation 
         CHECK(replayHash(level, script, s.run()->frame()) == stateHash(s.run()->world()));
     }
 }
+
+TEST_CASE("play: every kind of action a loaded script takes is recorded in the script's own words", "[play]") {
+    // The rope is cut by a script action here, not by the switch: the recording must say "cut".
+    const SceneDesc level = loadLevel("rope");
+    const ScriptLoad script = parseScript("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n", "cut.toml", level);
+    INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
+    REQUIRE(script.script);
+    PlaySession s(level, "rope.toml", kFrame);
+    s.load(*script.script);
+    s.key(Key::space, KeyAction::press);
+    while (s.run()->frame() < 20) s.step();
+    REQUIRE(s.run()->world().ropes()[0].cut);
+    const std::string recorded = s.recordedScript();
+    CHECK_THAT(recorded, Catch::Contains("do = \"cut\"\nitem = \"rope\""));
+    CHECK(replayHash(level, recorded, s.run()->frame()) == stateHash(s.run()->world()));
+}

@@ -214,8 +214,13 @@ void LevelRun::step() {
         if (isBalloon(static_cast<int>(i))) world_.circles()[i].velocity -= world_.def().gravity * (kBalloonLift * dt);
     world_.step();
     for (const Impact& impact : world_.lastImpacts()) {
-        if (impact.otherKind != Other::circle) continue;
-        const int item = circleItem_[static_cast<std::size_t>(impact.other)];
+        // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact
+        // has circle -1 and body set), or the circle a body struck (a ball's impact on a body).
+        int struck = -1;
+        if (impact.otherKind == Other::circle) struck = impact.other;
+        else if (impact.otherKind == Other::body && impact.circle >= 0) struck = impact.circle;
+        if (struck < 0) continue;
+        const int item = circleItem_[static_cast<std::size_t>(struck)];
         if (item >= 0) markHit(item, impact.pointOfImpact);
     }
     for (std::size_t i = 0; i < items_.size(); ++i) {

@@ -72,20 +72,8 @@ std::string tomlString(std::string_view text) {
     return out + "\"";
 }
 
-const char* verb(ActionKind kind) {
-    switch (kind) {
-    case ActionKind::rotate: return "rotate";
-    case ActionKind::aim: return "aim";
-    case ActionKind::fire: return "fire";
-    case ActionKind::detonate: return "detonate";
-    case ActionKind::toggle: return "toggle";
-    case ActionKind::fireWhen: return "fire-when";
-    }
-    return "";
-}
-
 void writeAction(std::ostream& out, const Action& a) {
-    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << verb(a.kind) << "\"\nitem = " << tomlString(a.item) << '\n';
+    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind) << "\"\nitem = " << tomlString(a.item) << '\n';
     if (a.angle) out << "angle = " << number(a.angleDegrees) << '\n';
     if (a.point) out << "point = [" << number(a.point->x) << ", " << number(a.point->y) << "]\n";
     if (!a.target.empty()) out << "target = " << tomlString(a.target) << '\n';
@@ -419,7 +407,7 @@ void PlaySession::takeScripted() {
         Action a = scripted_[nextScripted_];
         a.frame = run_->frame();
         if (const std::string why = takeAction(a, *run_); !why.empty()) {
-            say("the script's " + std::string(verb(a.kind)) + " " + a.item + " at frame " + std::to_string(a.frame) + ": " + why, "magnet");
+            say("the script's " + std::string(actionVerb(a.kind)) + " " + a.item + " at frame " + std::to_string(a.frame) + ": " + why, "magnet");
             continue;
         }
         actions_.push_back(a);
@@ -467,7 +455,7 @@ void PlaySession::takeByHand(ActionKind kind, int item) {
     a.item = level_.level.items[static_cast<std::size_t>(item)].name;
     takeAction(a, *run_);
     actions_.push_back(a);
-    say(std::string(verb(kind)) + " " + a.item + " at frame " + std::to_string(a.frame));
+    say(std::string(actionVerb(kind)) + " " + a.item + " at frame " + std::to_string(a.frame));
 }
 
 void PlaySession::useItemAtCursor() {

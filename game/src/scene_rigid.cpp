@@ -1,10 +1,13 @@
 // Scene files: [[box]] and [[capsule]], rigid bodies that turn (or lecture 3's blocks with
 // fixed_rotation), and [[pivot]], a rigid body pinned to the world at a point. Rigid bodies are
-// numbered in file order, every [[box]] first, then every [[capsule]]; a pivot names one by index.
+// numbered in file order, every [[box]] first, then every [[capsule]]; a pivot names one by index or name.
+#include "scene_errors.hpp"
 #include "scene_reading.hpp"
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 namespace rube::game {
 
@@ -75,10 +78,32 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
     reading.scene.bodyNames.push_back(name);
 }
 
+/// The body a pivot's `body` names by its `name` (an unknown name is reported with the closest one).
+std::optional<std::int64_t> namedBody(TableReader& pivot, const SceneReading& reading) {
+    const auto name = pivot.string("body", Need::required);
+    if (!name) return std::nullopt;
+    const auto& names = reading.scene.bodyNames;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (!name->empty() && names[i] == *name) return static_cast<std::int64_t>(i);
+    std::vector<std::string_view> defined;
+    for (const std::string& known : names)
+        if (!known.empty()) defined.push_back(known);
+    std::string message = "unknown body '" + *name + "'";
+    if (defined.empty()) message += " (no [[box]] or [[capsule]] has a name)";
+    else if (const auto match = closestMatch(*name, defined)) message += " (did you mean '" + std::string(*match) + "'?)";
+    else message += " (named bodies: " + joinNames(defined) + ")";
+    pivot.error(pivot.valuePlace("body"), std::move(message));
+    return std::nullopt;
+}
+
 void readPivot(const toml::table& table, SceneReading& reading) {
     TableReader pivot(table, "in [[pivot]]", kPivotKeys, reading.diag);
     const auto& bodies = reading.scene.bodies;
-    const auto index = pivot.integer("body", 0, std::max<std::int64_t>(0, static_cast<std::int64_t>(bodies.size()) - 1), Need::required);
+    // `body` is an index in file order (boxes, then capsules) or a body's name.
+    const toml::node* given = pivot.find("body");
+    const auto index = given && given->is_string()
+                           ? namedBody(pivot, reading)
+                           : pivot.integer("body", 0, std::max<std::int64_t>(0, static_cast<std::int64_t>(bodies.size()) - 1), Need::required);
     if (!index) return;
     if (bodies.empty()) {
         pivot.error(pivot.valuePlace("body"), "a pivot pins a rigid body: no [[box]] or [[capsule]] is defined");

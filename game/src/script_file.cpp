@@ -192,6 +192,8 @@ std::string Expectation::describe() const {
     return "";
 }
 
+std::string_view actionVerb(ActionKind kind) { return kDoNames[static_cast<int>(kind)]; }
+
 ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level) {
     Diagnostics diag(fileName);
     std::optional<toml::table> parsed = parseToml(text, fileName, diag);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rube::game {
@@ -53,6 +54,9 @@ struct ScriptDesc {
 /// Degrees as a script writes them, in radians: the one conversion every reader of angles uses,
 /// so an angle written back out in degrees (a recorded session) replays to the same radians.
 double scriptRadians(double degrees);
+
+/// The word a script's `do` spells an action kind with ("fire-when", "cut", ...).
+std::string_view actionVerb(ActionKind kind);
 
 /// Takes one action on a run (the names were checked when the script was read); "" or why it
 /// could not be done, such as an aim at a point out of the cannon's reach.

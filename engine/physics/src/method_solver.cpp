@@ -320,13 +320,15 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
         seg.b += seg.velocity * dt;
     }
     impacts += recordContactImpacts(contacts_, records_, ctx.circles, ctx);
+    if (hasRigid_) impacts += rigid_.recordImpacts(ctx);
     // Report in time order; ties by circle and other body, so the order never depends on the sort.
     std::sort(ctx.impacts.begin() + static_cast<std::ptrdiff_t>(firstImpact), ctx.impacts.end(),
               [](const Impact& a, const Impact& b) {
                   if (a.time != b.time) return a.time < b.time;
                   if (a.circle != b.circle) return a.circle < b.circle;
                   if (a.otherKind != b.otherKind) return a.otherKind < b.otherKind;
-                  return a.other < b.other;
+                  if (a.other != b.other) return a.other < b.other;
+                  return a.body < b.body;
               });
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
 }

@@ -37,6 +37,7 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
         p.baseSeparation = manifold.points[k].separation - c.normal.dot(p.anchorB - p.anchorA);
         p.normalMass = effectiveMass(la, lb, p.anchorA, p.anchorB, c.normal);
         p.tangentMass = effectiveMass(la, lb, p.anchorA, p.anchorB, t);
+        p.feature = manifold.points[k].id;
     }
     return c;
 }
@@ -57,7 +58,7 @@ void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidS
     }
 }
 
-void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view) {
+void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view, int substep) {
     for (RigidContact& c : contacts) {
         const LoadedBody a = load(view, c.a), b = load(view, c.b);
         for (int k = 0; k < c.count; ++k) {
@@ -65,6 +66,7 @@ void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& vi
             if (p.maxNormalImpulse > 0.0) continue;
             const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
             p.approachSpeed = -c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+            p.touchSubstep = substep;
         }
     }
 }

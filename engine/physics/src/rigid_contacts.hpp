@@ -13,6 +13,7 @@
 #include "rigid_manifold.hpp"
 #include "rigid_solver_body.hpp"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct RigidContactPoint {
     double tangentImpulse = 0.0;
     double maxNormalImpulse = 0.0;   ///< largest normal impulse of the step: 0 means it never touched
     double approachSpeed = 0.0;      ///< -vn before the substep in which it first pushed: what restitution reverses
+    int touchSubstep = 0;            ///< the substep in which it first pushed (once maxNormalImpulse > 0)
+    std::uint32_t feature = 0;       ///< which faces and vertices made it (the manifold's id): the warm-start key
+    bool carried = false;            ///< warm started from the last step: resting contact, never a new impact
 };
 
 /// A manifold turned into a constraint: one normal, up to two points.
@@ -60,7 +64,8 @@ void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidS
 /// Measured before any impulse, as Box2D measures it before the step: a point measured inside the sweep
 /// would count the spin its neighbour's impulse just gave the body (the far end of a plank landing
 /// flat dips faster), and bouncing that back would add energy.
-void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view);
+/// `substep` is the substep about to run: a point that has not pushed yet notes it as its touch substep.
+void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view, int substep);
 
 /// One Gauss-Seidel sweep: normal impulses (soft push-out when `useBias`, speculative gaps always
 /// kept), then friction within the Coulomb cone |lambda_t| <= mu lambda_n.

@@ -18,6 +18,8 @@ constexpr double kReferenceTolerance = 0.0005;
 /// cos of 8 degrees: a closest-points direction further off the best face than this is a corner or a
 /// cap touching first, and gets one point along that direction instead of a clipped face.
 constexpr double kFaceAlignment = 0.99;
+/// The id of the one point of two rounded ends (corner or cap) touching first: no face is involved.
+constexpr std::uint32_t kRoundedId = 0xffffu;
 
 /// Outward normal of an edge running d along a counter-clockwise polygon: d turned clockwise.
 Vec2 outwardNormal(Vec2 d) { return Vec2{d.y, -d.x}.normalized(); }
@@ -144,7 +146,7 @@ Manifold collideRoundedPolygons(const RoundedPolygon& a, const RoundedPolygon& b
             const Vec2 n = (pb - pa) / d;
             if (edge < 0 || n.dot(faceNormal) < kFaceAlignment) {
                 m.normal = n;
-                m.points[0] = {(pa + n * a.radius + pb - n * b.radius) * 0.5, d - radius};
+                m.points[0] = {(pa + n * a.radius + pb - n * b.radius) * 0.5, d - radius, kRoundedId};
                 m.count = 1;
                 return m;
             }
@@ -158,8 +160,8 @@ Manifold collideRoundedPolygons(const RoundedPolygon& a, const RoundedPolygon& b
     const Vec2 v11 = ref.vertices[edge];
     const Vec2 v12 = ref.vertices[(edge + 1) % ref.count];
     Vec2 w1 = inc.vertices[0], w2 = inc.vertices[0];
+    int best = 0;
     if (inc.count >= 2) {
-        int best = 0;
         for (int j = 1; j < inc.count; ++j)
             if (inc.normals[j].dot(n) < inc.normals[best].dot(n)) best = j;
         w1 = inc.vertices[best];
@@ -187,7 +189,10 @@ Manifold collideRoundedPolygons(const RoundedPolygon& a, const RoundedPolygon& b
         if (core - radius > speculative) continue;
         // Midway between the two surfaces: the reference surface is ref.radius out along n, the
         // incident one inc.radius back from the clipped core point.
-        m.points[m.count++] = {clipped[k] + n * (0.5 * (ref.radius - inc.radius - core)), core - radius};
+        // Which shape holds the reference face, which face, which incident edge and which of its ends.
+        const auto id = static_cast<std::uint32_t>((flip ? 1u : 0u) << 12 | static_cast<unsigned>(edge) << 8 |
+                                                   static_cast<unsigned>(best) << 4 | static_cast<unsigned>(k));
+        m.points[m.count++] = {clipped[k] + n * (0.5 * (ref.radius - inc.radius - core)), core - radius, id};
     }
     return m;
 }

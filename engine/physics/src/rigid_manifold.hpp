@@ -9,6 +9,8 @@
 #include "rube/physics/body.hpp"
 #include "rube/physics/rigid_body.hpp"
 
+#include <cstdint>
+
 namespace rube {
 
 /// A convex core polygon (counter-clockwise, world frame) swollen by `radius`.
@@ -30,6 +32,7 @@ RoundedPolygon makeRoundedPolygon(const Segment& segment);
 struct ManifoldPoint {
     Vec2 point;        ///< world point midway between the two surfaces
     double separation; ///< surface gap along the normal (negative: overlap), m
+    std::uint32_t id = 0; ///< the features that made it (reference face, incident edge and end), equal from step to step while they touch
 };
 
 /// Up to two contact points sharing one normal.

@@ -62,11 +62,14 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
         shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
     }
     const double h = dt / std::max(1, ctx.def.substeps);
+    substep_ = 0;
+    substepTime_ = h;
     const double hertz = std::min(kContactHertz, kMaxHertzPerSubstepRate / h);
     contactSoftness_.movable = makeSoftness(hertz, kContactDampingRatio, h);
     contactSoftness_.fixed = makeSoftness(kStaticHertzScale * hertz, kContactDampingRatio, h);
     pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
     findContacts(ctx, dt);
+    cache_.apply(contacts_);
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
 }
 
@@ -134,7 +137,7 @@ void RigidStage::integrateVelocities(Vec2 gravityStep) {
 }
 
 void RigidStage::warmStart() {
-    measureApproach(contacts_, view_);
+    measureApproach(contacts_, view_, substep_++);
     warmStartPivots(pivots_, view_);
     warmStartRigidContacts(contacts_, view_);
 }
@@ -153,7 +156,10 @@ void RigidStage::integratePositions(double h) {
     }
 }
 
-void RigidStage::applyRestitution(double threshold) { applyRigidRestitution(contacts_, view_, threshold); }
+void RigidStage::applyRestitution(double threshold) {
+    cache_.store(contacts_); // the last substep's impulses, not restitution's one-off bounce
+    applyRigidRestitution(contacts_, view_, threshold);
+}
 
 void RigidStage::finish(StepContext& ctx) const {
     for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {

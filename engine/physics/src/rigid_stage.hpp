@@ -7,6 +7,7 @@
 
 #include "pivot_joint.hpp"
 #include "rigid_contacts.hpp"
+#include "rigid_warm_start.hpp"
 #include "step_method.hpp"
 
 #include <vector>
@@ -39,6 +40,9 @@ public:
     void applyRestitution(double threshold);
     /// Writes the rigid bodies' new state back into the world.
     void finish(StepContext& ctx) const;
+    /// Reports every rigid contact that first touched this step faster than the resting speed as an
+    /// Impact (counted in the stats, as the circle contacts' are) and returns how many (rigid_impacts.cpp).
+    int recordImpacts(StepContext& ctx) const;
 
     /// An axis-aligned bounding box, for the pair test.
     struct Box {
@@ -50,6 +54,8 @@ private:
     void findContacts(const StepContext& ctx, double dt);
 
     int circleCount_ = 0;
+    int substep_ = 0;     // the substep the next warm start begins
+    double substepTime_ = 0.0; // h, s
     std::vector<RigidState> states_;
     std::vector<Vec2> startPosition_;
     std::vector<double> reach_; // per rigid body: speculative margin for the step
@@ -58,6 +64,7 @@ private:
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_;
+    RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;
     RigidSolverView view_;
     RigidContactSoftness contactSoftness_;

@@ -108,6 +108,7 @@ int World::addBody(const RigidBodyDef& d) {
     b.inverseInertia = dynamic && !d.fixedRotation ? 1.0 / momentOfInertia(d.shape, d.halfExtents, d.mass) : 0.0;
     b.angularVelocity = d.motion == Motion::fixed || d.fixedRotation ? 0.0 : d.angularVelocity;
     bodies_.push_back(b);
+    escapedBodies_.push_back(0);
     return static_cast<int>(bodies_.size()) - 1;
 }
 
@@ -207,6 +208,16 @@ void World::checkState() {
         if (!isFinite(c.position) || !isFinite(c.velocity)) stats_.nonFinite = true;
         if (!escaped_[i] && !def_.bounds.contains(c.position)) {
             escaped_[i] = 1;
+            ++stats_.escapes;
+        }
+    }
+    // Rigid bodies as circles: their centre leaving the bounds, a NaN in any part of the state.
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const RigidBody& b = bodies_[i];
+        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity))
+            stats_.nonFinite = true;
+        if (!escapedBodies_[i] && !def_.bounds.contains(b.position)) {
+            escapedBodies_[i] = 1;
             ++stats_.escapes;
         }
     }

@@ -70,10 +70,10 @@ struct StepStats {
     std::int64_t impacts = 0;        ///< impacts resolved
     std::int64_t restingContacts = 0; ///< impacts treated as resting contact (approach below restingSpeed)
     std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
-    std::int64_t escapes = 0;        ///< bodies that left the bounds (each counted once)
+    std::int64_t escapes = 0;        ///< circles and rigid bodies that left the bounds (each counted once)
     int maxEventsInStep = 0;
     std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver (the rest went to exact)
-    bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state
+    bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
 };
 
 class StepMethod;
@@ -146,6 +146,7 @@ private:
     Fields fields_;
     std::vector<Impact> impacts_;
     std::vector<std::uint8_t> escaped_;
+    std::vector<std::uint8_t> escapedBodies_; ///< per rigid body, as escaped_ per circle
     std::unique_ptr<StepMethod> method_;
     StepStats stats_;
     double time_ = 0.0;

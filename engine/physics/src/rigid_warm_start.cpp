@@ -1,0 +1,51 @@
+// Warm starting of rigid contacts between steps: a sorted table of the last step's impulses.
+#include "rigid_warm_start.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+namespace rube {
+
+namespace {
+
+/// One number per body pair: side A (always a rigid body), whether B is rigid, and B's index.
+std::uint64_t pairKey(const RigidContact& c) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.a.index)) << 32 |
+           static_cast<std::uint64_t>(c.b.rigid ? 0u : 1u) << 31 | static_cast<std::uint32_t>(c.b.index);
+}
+
+} // namespace
+
+void RigidContactCache::apply(std::span<RigidContact> contacts) const {
+    if (entries_.empty()) return;
+    for (RigidContact& c : contacts) {
+        const std::uint64_t pair = pairKey(c);
+        for (int k = 0; k < c.count; ++k) {
+            RigidContactPoint& p = c.points[k];
+            const auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_tuple(pair, p.feature),
+                                             [](const Entry& e, const std::tuple<std::uint64_t, std::uint32_t>& key) {
+                                                 return std::make_tuple(e.pair, e.feature) < key;
+                                             });
+            if (it == entries_.end() || it->pair != pair || it->feature != p.feature) continue;
+            p.normalImpulse = it->normalImpulse;
+            p.tangentImpulse = it->tangentImpulse;
+            p.carried = it->normalImpulse > 0.0;
+        }
+    }
+}
+
+void RigidContactCache::store(std::span<const RigidContact> contacts) {
+    entries_.clear();
+    for (const RigidContact& c : contacts) {
+        const std::uint64_t pair = pairKey(c);
+        for (int k = 0; k < c.count; ++k) {
+            const RigidContactPoint& p = c.points[k];
+            if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
+        }
+    }
+    std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
+        return std::make_tuple(a.pair, a.feature) < std::make_tuple(b.pair, b.feature);
+    });
+}
+
+} // namespace rube

@@ -1,0 +1,34 @@
+#pragma once
+// Internal: warm starting of rigid contacts from one step to the next. A contact point is known again
+// by its body pair and the features that made it (the manifold point's id: reference face, incident
+// edge and end), as Box2D matches manifold points; a point found again starts the step with the
+// impulses it ended the last one with, so a stack carries its weight from the first substep instead
+// of sinking while the impulses build up again. Not part of the public API.
+
+#include "rigid_contacts.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rube {
+
+/// The last step's impulses of every rigid contact point, by body pair and feature.
+class RigidContactCache {
+public:
+    /// Gives each point found in the cache its impulses back and marks it carried (when it pushed).
+    void apply(std::span<RigidContact> contacts) const;
+    /// Remembers every point's impulses at the end of the step's substeps (before restitution).
+    void store(std::span<const RigidContact> contacts);
+
+private:
+    struct Entry {
+        std::uint64_t pair = 0;    ///< side A's index, side B's kind and index
+        std::uint32_t feature = 0; ///< the manifold point's id
+        double normalImpulse = 0.0;
+        double tangentImpulse = 0.0;
+    };
+    std::vector<Entry> entries_; ///< sorted by (pair, feature)
+};
+
+} // namespace rube

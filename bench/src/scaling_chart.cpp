@@ -32,7 +32,7 @@ std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::s
     gp << "set terminal pngcairo size 1000,650 font ',11'\n"
        << "set output " << gnuplotQuoted(png) << "\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top left\n"
-       << "set title 'Pile scaled to N balls at constant density, 600 steps at 60 Hz: cost per body-step'\n"
+       << "set title 'The pile widened to N balls (the same 50 rows, a box N/1000 times as wide), 600 steps at 60 Hz: cost per body-step'\n"
        << "set xlabel 'bodies (log)'\nset ylabel 'microseconds per body-step (median)'\nset yrange [0:*]\n"
        << "set xrange [70:28000]\n";
     std::string plot;

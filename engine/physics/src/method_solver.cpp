@@ -62,7 +62,7 @@ public:
     void step(StepContext& ctx, double dt) override {
         prepareBodies(ctx, dt);
         findContacts(ctx, dt);
-        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, omega_);
+        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_);
         solve(ctx, dt);
         finish(ctx, dt);
     }

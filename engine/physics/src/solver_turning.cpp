@@ -4,7 +4,8 @@
 namespace rube {
 
 void TurningContacts::attach(std::span<ContactConstraint> contacts, std::span<const Circle> circles,
-                             std::span<const Segment> segments, std::vector<SolverBody>& bodies, std::vector<double>& omega) {
+                             std::span<const Segment> segments, std::vector<SolverBody>& bodies, std::vector<double>& inverseMass,
+                             std::vector<double>& omega) {
     moved_.clear();
     const int circleCount = static_cast<int>(circles.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -19,6 +20,7 @@ void TurningContacts::attach(std::span<ContactConstraint> contacts, std::span<co
         c.b = static_cast<int>(bodies.size());
         bodies.push_back(SolverBody{s.velocityAt(point), {}});
     }
+    inverseMass.resize(bodies.size(), 0.0); // the surface is the segment's: infinite mass (lecture 3)
     if (!omega.empty()) omega.resize(bodies.size(), 0.0);
 }
 

@@ -22,10 +22,10 @@ namespace rube {
 class TurningContacts {
 public:
     /// For every contact against a segment that turns (solver bodies: circles, then segments), appends a
-    /// body moving at the segment's velocity at the contact point and points the contact at it; `omega`
-    /// grows with zeros alike (those bodies never turn).
+    /// body moving at the segment's velocity at the contact point and points the contact at it;
+    /// `inverseMass` and `omega` grow with zeros alike (those bodies have infinite mass and never turn).
     void attach(std::span<ContactConstraint> contacts, std::span<const Circle> circles, std::span<const Segment> segments,
-                std::vector<SolverBody>& bodies, std::vector<double>& omega);
+                std::vector<SolverBody>& bodies, std::vector<double>& inverseMass, std::vector<double>& omega);
     /// Points every contact `attach` moved back at its segment (the warm-start cache and the impacts name it).
     void detach(std::span<ContactConstraint> contacts);
 

@@ -110,13 +110,18 @@ ItemBodies itemBodies(const ItemDesc& item) {
     const KindDefaults defaults = defaultsOf(item.kind);
     Material material;
     material.bounciness = defaults.bounciness;
-    if (isBall(item.kind)) {
+    // A ball, or the round body of a rocket: placed where the item is, sized and weighed by its kind.
+    const auto roundBody = [&] {
         CircleDef ball;
         ball.position = item.position;
         ball.velocity = item.velocity;
         ball.radius = item.size;
         ball.mass = defaults.mass;
         ball.material = material;
+        return ball;
+    };
+    if (isBall(item.kind)) {
+        CircleDef ball = roundBody();
         ball.magnetic = item.kind == ItemKind::steel;
         bodies.circles.push_back(ball);
         return bodies;
@@ -156,13 +161,7 @@ ItemBodies itemBodies(const ItemDesc& item) {
         break;
     }
     case ItemKind::rocket: {
-        CircleDef body;
-        body.position = item.position;
-        body.velocity = item.velocity;
-        body.radius = item.size;
-        body.mass = defaults.mass;
-        body.material = material;
-        bodies.circles.push_back(body);
+        bodies.circles.push_back(roundBody());
         // Lit at the start it burns [0, burn); unlit, it waits (start and end at infinity) for a switch or click.
         Thruster thruster;
         thruster.force = Vec2::fromAngle(item.angle) * item.thrust;

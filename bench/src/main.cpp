@@ -33,6 +33,13 @@ std::string resultsName(const std::string& suffix) {
     return std::string(date) + "-" + host + suffix + ".csv";
 }
 
+// A results file, its folder made first (bench/results/ on a fresh clone, or wherever a flag points).
+std::ofstream openResultFile(const std::string& path) {
+    const std::filesystem::path file(path);
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+    return std::ofstream(file);
+}
+
 bool selected(const std::vector<std::string>& filter, const std::string& name) {
     return filter.empty() || std::find(filter.begin(), filter.end(), name) != filter.end();
 }
@@ -56,8 +63,7 @@ bool runsInScaling(const bench::Engine& engine) {
 bool writeFailures(const std::string& path, bool quick) {
     const auto start = std::chrono::steady_clock::now();
     const bench::failures::Sweep sweep = bench::failures::runSweep(quick);
-    if (std::filesystem::path(path).has_parent_path()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-    std::ofstream out(path);
+    std::ofstream out = openResultFile(path);
     bench::failures::writeMarkdown(out, sweep, quick ? "rube_bench --quick" : "rube_bench --failures");
     out.close();
     if (!out) {
@@ -166,9 +172,7 @@ int main(int argc, char** argv) {
         }
     }
 
-    if (std::filesystem::path(csvPath).has_parent_path())
-        std::filesystem::create_directories(std::filesystem::path(csvPath).parent_path());
-    std::ofstream csv(csvPath);
+    std::ofstream csv = openResultFile(csvPath);
     bench::writeCsv(csv, rows);
     csv.close();
     if (!csv) {
@@ -181,9 +185,7 @@ int main(int argc, char** argv) {
     // Where auto stands: written whenever auto ran, so a reader sees every step it was beaten, if any.
     const std::vector<bench::AutoVerdict> verdicts = bench::judgeAuto(rows, sceneOrder);
     if (!verdicts.empty()) {
-        if (std::filesystem::path(frontPath).has_parent_path())
-            std::filesystem::create_directories(std::filesystem::path(frontPath).parent_path());
-        std::ofstream front(frontPath);
+        std::ofstream front = openResultFile(frontPath);
         bench::writeAutoTable(front, verdicts);
         const auto beaten = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.beatenBy.empty(); });
         std::cerr << "rube_bench: auto is on the front at " << verdicts.size() - static_cast<std::size_t>(beaten) << " of "

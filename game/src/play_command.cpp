@@ -4,12 +4,12 @@
 
 #include "frame_recorder.hpp"
 #include "level_view.hpp"
+#include "scene_errors.hpp"
 #include "scene_framing.hpp"
 #include "script_file.hpp"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -69,18 +69,6 @@ std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::
     }
     json << (first ? "" : "\n  ") << "]\n}\n";
     return json.str();
-}
-
-// Written under a temporary name and renamed, so a reader never sees half a summary.
-bool writeSummary(const std::filesystem::path& file, const std::string& text) {
-    const std::filesystem::path temporary = file.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!(out << text) || !out.flush()) return false;
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, file, ec);
-    return !ec;
 }
 
 bool met(const Expectation& e, const LevelRun& run) {
@@ -170,7 +158,7 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
             failures.push_back(options.script + ":" + std::to_string(e.place.line) + ":" + std::to_string(e.place.column) +
                                ": expectation failed: " + e.describe());
     }
-    if (!options.out.empty() && !writeSummary(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged))) {
+    if (!options.out.empty() && !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged))) {
         err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << '\n';
         return 1;
     }

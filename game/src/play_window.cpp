@@ -3,6 +3,7 @@
 #include "play_window.hpp"
 
 #include "play_session.hpp"
+#include "scene_errors.hpp"
 #include "scene_file.hpp"
 
 #include "rube/render/renderer.hpp"
@@ -11,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 
 namespace rube::game {
@@ -27,18 +27,6 @@ bool hasDisplay() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 && *x11) || (wayland && *wayland);
-}
-
-// Written under a temporary name and renamed, so an interrupted session leaves no half a script.
-bool writeAtomically(const std::filesystem::path& file, const std::string& text) {
-    const std::filesystem::path temporary = file.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!(out << text) || !out.flush()) return false;
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, file, ec);
-    return !ec;
 }
 
 } // namespace
@@ -142,7 +130,7 @@ int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& er
         out << "goal:             " << (run->goalFrame() ? "reached at frame " + std::to_string(*run->goalFrame()) : std::string("not reached")) << '\n';
     }
     if (!options.record.empty()) {
-        if (!writeAtomically(options.record, session.recordedScript())) {
+        if (!writeTextFileAtomically(options.record, session.recordedScript())) {
             err << "rube play: cannot write " << options.record << '\n';
             return 1;
         }

@@ -122,7 +122,7 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return 2;
     }
     const SceneDesc& scene = *load.scene;
-    if (method && *method != Method::solver && *method != Method::automatic && needsRotatingSolver(scene)) {
+    if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
         err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules or pivots of "
             << options.scene << ": use auto or solver\n";
         return 2;

@@ -125,4 +125,15 @@ std::optional<std::string> readTextFile(const std::filesystem::path& file, Scene
     return std::move(text).str();
 }
 
+bool writeTextFileAtomically(const std::filesystem::path& file, const std::string& text) {
+    const std::filesystem::path temporary = file.string() + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        if (!(out << text) || !out.flush()) return false;
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, file, ec);
+    return !ec;
+}
+
 } // namespace rube::game

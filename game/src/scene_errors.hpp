@@ -73,4 +73,8 @@ inline constexpr std::uintmax_t kMaxTextFileBytes = 4u << 20;
 /// loader words an unreadable file the same way.
 std::optional<std::string> readTextFile(const std::filesystem::path& file, SceneError& error);
 
+/// Writes `text` to `file` under a temporary name and renames it, so a reader (or an interrupted
+/// run) never sees half a file; false when it could not be written.
+bool writeTextFileAtomically(const std::filesystem::path& file, const std::string& text);
+
 } // namespace rube::game

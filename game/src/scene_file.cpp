@@ -223,7 +223,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     const toml::table* world = document["world"].as_table();
     const bool namesMethod = world && world->contains("method");
     const bool rotating = needsRotatingSolver(scene);
-    if (rotating && namesMethod && scene.world.method != Method::solver && scene.world.method != Method::automatic) {
+    if (rotating && namesMethod && !movesTurningBodies(scene.world.method)) {
         TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
         worldTable.error(worldTable.valuePlace("method"), "method '" + std::string(methodName(scene.world.method)) +
                                                               "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");

@@ -128,7 +128,7 @@ void readRigidBodies(TableReader& root, SceneReading& reading) {
 bool needsRotatingSolver(const SceneDesc& scene) {
     if (!scene.pivots.empty()) return true;
     for (const RigidBodyDef& b : scene.bodies)
-        if (b.shape != BodyShape::box || !b.fixedRotation) return true;
+        if (!isBlock(b)) return true;
     return false;
 }
 

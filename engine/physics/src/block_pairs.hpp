@@ -14,9 +14,6 @@ namespace rube {
 
 struct StepContext;
 
-/// True for lecture 3's block: a box that never turns (the only rigid body these methods move).
-inline bool isBlock(const RigidBody& b) { return b.shape == BodyShape::box && b.fixedRotation; }
-
 /// One predicted impact of block `block` against a circle, segment or block (`kind`, `other`).
 struct BlockEvent {
     double time = std::numeric_limits<double>::infinity();

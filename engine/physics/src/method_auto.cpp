@@ -36,7 +36,8 @@ public:
 
     void step(StepContext& ctx, double dt) override {
         const std::int64_t affordable = affordableEvents(ctx);
-        const bool solverNow = solverStepsLeft_ > 0 || affordable < kFewestEvents || frictionPair(ctx) || turningBodies(ctx);
+        const bool solverNow = solverStepsLeft_ > 0 || affordable < kFewestEvents || frictionPair(ctx) ||
+                               anyTurning(ctx.bodies, ctx.pivots); // turning bodies and pivots: only the solver models them
         if (!solverNow && tryExact(ctx, dt, affordable)) {
             usedSolver_ = false;
             stint_ = kFirstStint;
@@ -67,13 +68,6 @@ private:
             std::count_if(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
         const auto shapes = static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() + ctx.bodies.size());
         return kExactBudget / std::max<std::int64_t>(1, dynamic * shapes);
-    }
-
-    // Bodies that turn (anything but lecture 3's fixed-rotation boxes) and pivots: only the solver models them.
-    static bool turningBodies(const StepContext& ctx) {
-        return !ctx.pivots.empty() || std::any_of(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) {
-            return b.shape != BodyShape::box || !b.fixedRotation;
-        });
     }
 
     static bool frictionPair(const StepContext& ctx) {

@@ -31,14 +31,16 @@ constexpr std::string_view kMethodNames[] = {"discrete", "turn-based", "exact", 
 
 } // namespace
 
+bool movesTurningBodies(Method method) { return method == Method::solver || method == Method::automatic; }
+
+bool anyTurning(std::span<const RigidBody> bodies, std::span<const Pivot> pivots) {
+    return !pivots.empty() || std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) { return !isBlock(b); });
+}
+
 void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots) {
-    if (method == Method::solver || method == Method::automatic) return;
     // Lecture 3's axis-aligned blocks (fixed-rotation boxes) are every method's; anything that turns
     // needs the solver's rotation and contact manifolds, and is refused rather than silently ignored.
-    const bool turns = !pivots.empty() || std::any_of(bodies.begin(), bodies.end(), [](const RigidBody& b) {
-        return b.shape != BodyShape::box || !b.fixedRotation;
-    });
-    if (turns)
+    if (!movesTurningBodies(method) && anyTurning(bodies, pivots))
         throw std::logic_error("method '" + std::string(methodName(method)) +
                                "' cannot move rotating rigid bodies, capsules or pivots: use method 'auto' or 'solver'");
 }

@@ -44,6 +44,11 @@ struct RigidBodyDef {
     bool fixedRotation = false;
 };
 
+/// True for lecture 3's block, a box that never turns (every method moves it); any other body turns,
+/// which only the solver models.
+inline bool isBlock(const RigidBody& b) { return b.shape == BodyShape::box && b.fixedRotation; }
+inline bool isBlock(const RigidBodyDef& d) { return d.shape == BodyShape::box && d.fixedRotation; }
+
 /// The moment of inertia of a uniform body of `mass` about its centre:
 /// box m (w^2 + h^2) / 12; capsule: its rectangle plus two half discs (parallel-axis theorem).
 double momentOfInertia(BodyShape shape, Vec2 halfExtents, double mass);

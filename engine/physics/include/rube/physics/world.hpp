@@ -152,6 +152,12 @@ private:
     double time_ = 0.0;
 };
 
+/// True when `method` moves bodies that turn (rotating boxes, capsules, pivots): the solver and auto.
+bool movesTurningBodies(Method method);
+
+/// True when some body turns or is pinned: anything but lecture 3's blocks (see isBlock), or a pivot.
+bool anyTurning(std::span<const RigidBody> bodies, std::span<const Pivot> pivots);
+
 /// Throws std::logic_error unless `method` models these bodies and pivots: lecture 3's axis-aligned
 /// blocks (fixed-rotation boxes) suit every method; turning bodies, capsules and pivots need solver or auto.
 void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots);

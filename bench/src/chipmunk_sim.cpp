@@ -1,5 +1,6 @@
 // The Chipmunk 7.0.3 adapter (Debian's libchipmunk-dev), written from its documented API.
-// Chipmunk is run with its defaults (10 iterations, 0.1 m collision slop, bounding-box tree).
+// Chipmunk is run with its defaults (10 iterations, 0.1 m collision slop, bounding-box tree, no
+// sleeping; --chipmunk-sleep turns sleeping on).
 
 #include "sim.hpp"
 
@@ -16,6 +17,8 @@ class ChipmunkSim final : public Sim {
 public:
     explicit ChipmunkSim(const WorldSpec& spec) : space_(cpSpaceNew()), timeStep_(spec.timeStep) {
         cpSpaceSetGravity(space_, toCp(spec.gravity));
+        // Chipmunk's manual: sleeping is off until a sleep time threshold is set; Box2D's 0.5 s when asked.
+        if (spec.chipmunkSleep) cpSpaceSetSleepTimeThreshold(space_, 0.5);
     }
     ~ChipmunkSim() override {
         // cpSpaceFree frees neither bodies nor shapes: remove and free what this adapter made.

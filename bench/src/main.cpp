@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
     std::vector<int> rates;
     int repeats = 5;
     double runTimeLimit = 8.0;
+    bool rubeNoSleep = false, chipmunkSleep = false;
     app.add_flag("--quick", quick, "tiny scenes, one repeat, two time steps: checks the bench runs, not its speed");
     app.add_flag("--list", list, "list the scenes and engines and exit");
     app.add_option("--csv", csvPath, "results file (default: bench/results/<date>-<host>.csv, --scaling: <date>-<host>-scaling.csv; --quick: ./bench-quick.csv)");
@@ -100,6 +101,8 @@ int main(int argc, char** argv) {
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
     app.add_option("--repeats", repeats, "most timed repeats per configuration; the median is kept")->check(CLI::Range(1, 100));
     app.add_option("--run-limit", runTimeLimit, "seconds before one run is abandoned and flagged as a timeout");
+    app.add_flag("--rube-no-sleep", rubeNoSleep, "rube's methods without sleeping islands (sleep_speed 0): what a pile costs while it never rests");
+    app.add_flag("--chipmunk-sleep", chipmunkSleep, "Chipmunk with sleeping on (0.5 s idle; Chipmunk's default is off, Box2D's on)");
     CLI11_PARSE(app, argc, argv);
 
     auto& engines = bench::engines();
@@ -124,6 +127,8 @@ int main(int argc, char** argv) {
     options.maxRepeats = quick ? 1 : repeats;
     options.minRepeats = std::min(options.maxRepeats, 3);
     options.runTimeLimit = runTimeLimit;
+    options.rubeSleep = !rubeNoSleep;
+    options.chipmunkSleep = chipmunkSleep;
 
     std::vector<bench::Row> rows;
     std::vector<std::string> sceneOrder, scalingOrder;

@@ -51,6 +51,7 @@ private:
         def.gravity = spec.gravity;
         def.timeStep = spec.timeStep;
         def.method = method;
+        if (!spec.rubeSleep) def.sleepSpeed = 0.0;
         return def;
     }
 

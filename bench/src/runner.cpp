@@ -13,9 +13,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::unique_ptr<Sim> buildSim(const Scene& scene, const Engine& engine, double timeStep, const SceneSize& size) {
-    auto sim = engine.make({scene.gravity, timeStep});
-    scene.build(*sim, size);
+std::unique_ptr<Sim> buildSim(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options) {
+    auto sim = engine.make({scene.gravity, timeStep, options.rubeSleep, options.chipmunkSleep});
+    scene.build(*sim, options.size);
     return sim;
 }
 
@@ -25,7 +25,7 @@ bool inside(const Scene& scene, Vec2 p) {
 
 // The measurement run: the probe and the stability flags look at the world after every step.
 void measure(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, Row& row) {
-    auto sim = buildSim(scene, engine, timeStep, options.size);
+    auto sim = buildSim(scene, engine, timeStep, options);
     auto probe = scene.probe(options.size, timeStep);
     row.bodies = sim->ballCount(); // known even if the run times out
     std::vector<std::uint8_t> escaped(static_cast<std::size_t>(sim->ballCount()), 0);
@@ -53,7 +53,7 @@ void measure(const Scene& scene, const Engine& engine, double timeStep, const Ru
 
 // One timed run: building the world is outside the clock, the step loop is all that is inside it.
 double timedRun(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, int steps) {
-    auto sim = buildSim(scene, engine, timeStep, options.size);
+    auto sim = buildSim(scene, engine, timeStep, options);
     const auto start = Clock::now();
     for (int step = 0; step < steps; ++step) sim->step();
     const auto stop = Clock::now();

@@ -15,6 +15,8 @@ struct RunOptions {
     double repeatBudget = 3.0;   ///< seconds: no repeats past minRepeats once the runs would take this long
     double slowRun = 4.0;        ///< seconds: a run this slow is timed once (a slow method must not eat the budget)
     double runTimeLimit = 8.0;   ///< seconds: a measurement run past this is abandoned (flagged "timeout")
+    bool rubeSleep = true;       ///< see WorldSpec
+    bool chipmunkSleep = false;  ///< see WorldSpec
 };
 
 /// One CSV row: what one scene cost and how wrong it was on one engine at one time step.

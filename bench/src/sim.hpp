@@ -39,6 +39,8 @@ struct LineSpec {
 struct WorldSpec {
     Vec2 gravity{0.0, -9.81};
     double timeStep = 1.0 / 60;
+    bool rubeSleep = true;       ///< rube's sleeping islands, on by default as in a level (--rube-no-sleep: off)
+    bool chipmunkSleep = false;  ///< Chipmunk's sleeping, off by default in Chipmunk (--chipmunk-sleep: 0.5 s)
 };
 
 /// A ball's state as read back after a step (outside the timed loop).

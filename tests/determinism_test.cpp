@@ -26,22 +26,22 @@ struct Expected {
 
 // Recorded with g++ 12 -O2 on x86-64; clang++ 14 and -O0 give the same.
 constexpr Expected kExpected[] = {
-    {"ball-stack", "", 240, 0x4d2087e7c4ed17e1ull},
-    {"bounce", "", 240, 0x4c2cef3fd00aef15ull},
-    {"bullet", "", 6, 0x044cdc1b9d00e2aeull},
-    {"newtons-cradle", "", 240, 0x266d4f74569c1a6aull},
-    {"pile", "", 120, 0xe0b4312b91281da8ull},
-    {"pool-break", "", 240, 0x264554b93f25ccddull},
-    {"projectile", "", 108, 0xad425ba6c5def038ull},
-    {"slope-rest", "", 180, 0x29c6b15c4aad14b0ull},
-    {"rolling", "", 180, 0x6c36752f98a83189ull},
-    {"float", "", 300, 0x72fe7040c1674a66ull},
-    {"pendulum", "", 300, 0x52e300f873b9a241ull},
-    {"pendulum", "solver", 300, 0x91f9089acb221935ull},
-    {"pool-break", "discrete", 240, 0x8cd878b4b51a0b74ull},
-    {"pool-break", "turn-based", 240, 0xe626442c4809d8ddull},
-    {"pool-break", "solver", 240, 0xeccc6c082bbcf7c6ull},
-    {"ball-stack", "exact", 240, 0xb5cb247fd653b627ull},
+    {"ball-stack", "", 240, 0x7f4d9ab267b964b8ull},
+    {"bounce", "", 240, 0x65d6f2a6cd701f55ull},
+    {"bullet", "", 6, 0x6c99b03990abdb2eull},
+    {"newtons-cradle", "", 240, 0x72c92839e3dd0ceaull},
+    {"pile", "", 120, 0x91569f15f4a6b5fdull},
+    {"pool-break", "", 240, 0x14ecb34ce1b5401dull},
+    {"projectile", "", 108, 0xee9cab20ebced738ull},
+    {"slope-rest", "", 180, 0x69110147ab9d67b0ull},
+    {"rolling", "", 180, 0x92b5a6c42e589cf4ull},
+    {"float", "", 300, 0xe9b5c82953abfd26ull},
+    {"pendulum", "", 300, 0xe93709b13a174f01ull},
+    {"pendulum", "solver", 300, 0xc2ffab9fb01f7cf5ull},
+    {"pool-break", "discrete", 240, 0x78c5ffaf9214a934ull},
+    {"pool-break", "turn-based", 240, 0x05de3119787a59ddull},
+    {"pool-break", "solver", 240, 0x7790e6329b363f86ull},
+    {"ball-stack", "exact", 240, 0x6c62daf334dca0a7ull},
 };
 
 std::uint64_t runAndHash(const Expected& e) {

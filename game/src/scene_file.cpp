@@ -16,7 +16,7 @@ constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
                                            "substeps",  "max_events_per_step", "resting_speed", "duration",
-                                           "air_drag"};
+                                           "air_drag",  "sleep_speed",         "time_to_sleep"};
 constexpr std::string_view kAirDragKeys[] = {"linear", "quadratic"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
 constexpr std::string_view kViewKeys[] = {"min", "max"};
@@ -25,7 +25,8 @@ constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
 // A world key written at the top level is a common slip; say where it goes instead of guessing a typo.
 constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},  {"time_step", "[world]"},     {"method", "[world]"},
                                  {"bounds", "[world]"},   {"substeps", "[world]"},      {"duration", "[world]"},
-                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}, {"air_drag", "[world]"}};
+                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}, {"air_drag", "[world]"},
+                                 {"sleep_speed", "[world]"}, {"time_to_sleep", "[world]"}};
 
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
@@ -99,6 +100,8 @@ void readWorld(TableReader& root, SceneDesc& scene) {
     if (const auto n = world.integer("substeps", 1, 1000)) def.substeps = static_cast<int>(*n);
     if (const auto n = world.integer("max_events_per_step", 1, 10'000'000)) def.maxEventsPerStep = static_cast<int>(*n);
     if (const auto v = world.number("resting_speed", NumberRange::nonNegative())) def.restingSpeed = *v;
+    if (const auto v = world.number("sleep_speed", NumberRange::nonNegative())) def.sleepSpeed = *v;
+    if (const auto t = world.number("time_to_sleep", NumberRange::positive())) def.timeToSleep = *t;
     if (const auto d = world.number("duration", NumberRange::positive())) {
         if (*d / def.timeStep > kMaxDefaultSteps)
             world.error(world.valuePlace("duration"), "duration " + formatNumber(*d) + " s at time_step " +

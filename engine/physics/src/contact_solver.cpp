@@ -46,7 +46,7 @@ void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<Solve
         bodies[c.b].velocity -= p * invMassB;
         if constexpr (Friction) {
             const FrictionTerms& f = friction->terms[k];
-            if (f.friction > 0.0)
+            if (f.impulse != 0.0) // a contact without friction (mu = 0) never holds an impulse
                 applyFriction(c, f, f.impulse, invMassA, invMassB, bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
         }
     }
@@ -94,7 +94,9 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         if (total > 0.0 && previous == 0.0) markFirstTouch(records[k], substep, h, s, vn);
         if constexpr (Friction) {
             FrictionTerms& f = friction->terms[k];
-            if (f.friction > 0.0) solveFriction(c, f, invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
+            // Friction is bounded by mu times the normal impulse: a contact that does not push and
+            // holds no friction impulse (a speculative one, most of a pile's) has none to solve.
+            if (f.friction > 0.0 && (c.impulse > 0.0 || f.impulse != 0.0)) solveFriction(c, f, invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }

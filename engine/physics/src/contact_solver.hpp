@@ -51,6 +51,7 @@ struct ContactRecord {
     double approachSpeed = 0.0; ///< -vn when the contact first pushed: the speed restitution reverses
     double touchTime = 0.0;     ///< seconds into the step at which it first touched
     int firstTouch = -1;        ///< substep in which a contact that started at rest first pushed, or -1
+    double tangentImpulse = 0.0; ///< the pair's friction impulse at the end of the last step: friction's warm start
 };
 
 struct FrictionState;

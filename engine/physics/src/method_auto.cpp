@@ -17,6 +17,7 @@
 //      solver takes this step and the next ones, for a stint that doubles each time exact fails
 //      again (a lasting crowd costs one failed trial per stint, not one per step).
 // The measure is a count of work, never a clock, so the choice is the same on every machine.
+#include "solver_sleep.hpp"
 #include "step_method.hpp"
 
 #include <algorithm>
@@ -38,6 +39,8 @@ public:
         const std::int64_t affordable = affordableEvents(ctx);
         const bool solverNow = solverStepsLeft_ > 0 || affordable < kFewestEvents || frictionPair(ctx) ||
                                anyTurning(ctx.bodies, ctx.pivots); // turning bodies and pivots: only the solver models them
+        // Exact moves every body: sleepers (the solver's) wake before it tries.
+        if (!solverNow) wakeAll(ctx.circles);
         if (!solverNow && tryExact(ctx, dt, affordable)) {
             usedSolver_ = false;
             stint_ = kFirstStint;
@@ -58,6 +61,7 @@ public:
     }
 
     bool integratesRotation() const override { return usedSolver_; }
+    bool keepsSleep() const override { return true; }
 
 private:
     // How many events exact may resolve this step within the budget: one search is a test of

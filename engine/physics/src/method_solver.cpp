@@ -6,6 +6,7 @@
 #include "rigid_stage.hpp"
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
+#include "solver_sleep.hpp"
 #include "solver_sweep.hpp"
 #include "solver_turning.hpp"
 #include "step_method.hpp"
@@ -62,11 +63,18 @@ public:
     void step(StepContext& ctx, double dt) override {
         prepareBodies(ctx, dt);
         findContacts(ctx, dt);
+        // Sleepers that something reached wake before anything is solved, and the contacts are found
+        // again with them moving (each pass wakes at least one island, so this ends).
+        while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_, bulletPaths())) {
+            prepareBodies(ctx, dt);
+            findContacts(ctx, dt);
+        }
         if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_);
         solve(ctx, dt);
         finish(ctx, dt);
     }
     bool integratesRotation() const override { return true; }
+    bool keepsSleep() const override { return true; }
 
 private:
     void prepareBodies(const StepContext& ctx, double dt);
@@ -74,6 +82,7 @@ private:
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
     void findFriction(const StepContext& ctx);
+    std::span<const BoundingBox> bulletPaths();
 
     int circleCount_ = 0;
     int segmentCount_ = 0;
@@ -97,6 +106,7 @@ private:
     // Rotation and friction, touched only in steps where some circle spins or some pair has friction.
     bool anyRotation_ = false;
     std::vector<FrictionTerms> frictions_; // parallel to contacts_ in steps with rotation
+    std::vector<double> tangentImpulses_;  // scratch: the friction impulses the cache keeps
     std::vector<double> omega_;           // per solver body: angular velocity (segments stay 0)
     std::vector<int> rotating_;           // circles that turn this step
     std::vector<double> turn_;            // per rotating circle: angle turned this step
@@ -108,9 +118,24 @@ private:
     // Rigid bodies (boxes, capsules) and pivots: only in steps whose world has some.
     bool hasRigid_ = false;
     RigidStage rigid_;
+    SleepIslands sleep_;
+    std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
+    double dt_ = 0.0;
 };
 
+std::span<const BoundingBox> SolverMethod::bulletPaths() {
+    bulletPaths_.clear();
+    for (const int i : bullets_) {
+        const BoundingBox& box = circleBoxes_[static_cast<std::size_t>(i)];
+        const Vec2 move = bodies_[static_cast<std::size_t>(i)].velocity * dt_;
+        bulletPaths_.push_back({{box.min.x + std::min(move.x, 0.0), box.min.y + std::min(move.y, 0.0)},
+                                {box.max.x + std::max(move.x, 0.0), box.max.y + std::max(move.y, 0.0)}});
+    }
+    return bulletPaths_;
+}
+
 void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
+    dt_ = dt;
     circleCount_ = static_cast<int>(ctx.circles.size());
     segmentCount_ = static_cast<int>(ctx.segments.size());
     const std::size_t bodyCount = ctx.circles.size() + ctx.segments.size();
@@ -131,7 +156,8 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
     turning_ = false;
     for (int i = 0; i < circleCount_; ++i) {
         const Circle& c = ctx.circles[i];
-        const bool dynamic = c.motion == Motion::dynamic && c.inverseMass > 0.0;
+        // An asleep circle is fixed for the step: no gravity, no contacts of its own.
+        const bool dynamic = c.motion == Motion::dynamic && c.inverseMass > 0.0 && !c.sleep.asleep;
         const Vec2 v = c.motion == Motion::fixed ? Vec2{} : c.velocity;
         start_[i] = c.position;
         bodies_[i] = {v, {}};
@@ -207,7 +233,7 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
                 filingBoxes_[i] = circleBoxes_[i];
                 bullets_.push_back(i);
             }
-            if (!isDynamic_[i]) continue;
+            if (!isDynamic_[i] && !ctx.circles[i].sleep.asleep) continue; // sleepers inside the grid, not in its border cells
             region.min = {std::min(region.min.x, filingBoxes_[i].min.x), std::min(region.min.y, filingBoxes_[i].min.y)};
             region.max = {std::max(region.max.x, filingBoxes_[i].max.x), std::max(region.max.y, filingBoxes_[i].max.y)};
         }
@@ -233,7 +259,7 @@ void SolverMethod::findFriction(const StepContext& ctx) {
     const auto& circles = ctx.circles;
     const auto& segments = ctx.segments;
     // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
-    buildFriction(contacts_, circles, segments, inverseMass_, [&](std::size_t k) {
+    buildFriction(contacts_, records_, circles, segments, inverseMass_, [&](std::size_t k) {
         const ContactConstraint& c = contacts_[k];
         const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
                                                 : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
@@ -291,7 +317,10 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
     if (turning_) turningContacts_.detach(contacts_);
-    cache_.store(contacts_, circleCount_, segmentCount_);
+    tangentImpulses_.clear();
+    if (anyRotation_)
+        for (const FrictionTerms& f : frictions_) tangentImpulses_.push_back(f.impulse);
+    cache_.store(contacts_, tangentImpulses_, circleCount_, segmentCount_);
 }
 
 void SolverMethod::finish(StepContext& ctx, double dt) {
@@ -331,6 +360,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
                   return a.body < b.body;
               });
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
+    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep);
 }
 
 } // namespace

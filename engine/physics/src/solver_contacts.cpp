@@ -52,7 +52,8 @@ const PreviousContact* ContactCache::find(int circle, int other, int circleCount
     return nullptr;
 }
 
-void ContactCache::store(std::span<const ContactConstraint> contacts, int circleCount, int segmentCount) {
+void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount,
+                         int segmentCount) {
     circleCount_ = circleCount;
     segmentCount_ = segmentCount;
     // Counting sort by circle: each circle's pairs become one short run to scan next step.
@@ -62,10 +63,12 @@ void ContactCache::store(std::span<const ContactConstraint> contacts, int circle
     cursor_.assign(ownerStart_.begin(), ownerStart_.end() - 1);
     other_.resize(contacts.size());
     previous_.resize(contacts.size());
-    for (const ContactConstraint& c : contacts) {
+    const bool friction = tangentImpulses.size() == contacts.size();
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+        const ContactConstraint& c = contacts[i];
         const int k = cursor_[c.a]++;
         other_[k] = c.b;
-        previous_[k] = {c.normal, c.impulse};
+        previous_[k] = {c.normal, c.impulse, friction ? tangentImpulses[i] : 0.0};
     }
 }
 
@@ -108,6 +111,7 @@ void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle>
         r.kind = g.kind;
         // The pair's bounciness is the product of both materials' (body.hpp, Material).
         r.bounciness = a.material.bounciness * other.bounciness;
+        r.tangentImpulse = previous ? previous->tangentImpulse : 0.0;
         records.push_back(r);
     }
 }

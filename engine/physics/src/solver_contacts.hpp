@@ -12,10 +12,11 @@
 
 namespace rube {
 
-/// How a pair ended the last step: its normal and accumulated impulse.
+/// How a pair ended the last step: its normal and accumulated impulses.
 struct PreviousContact {
-    Vec2 normal;          ///< from the other body towards the circle
-    double impulse = 0.0; ///< accumulated normal impulse of the last substep
+    Vec2 normal;                 ///< from the other body towards the circle
+    double impulse = 0.0;        ///< accumulated normal impulse of the last substep
+    double tangentImpulse = 0.0; ///< accumulated friction impulse of the last substep (0 without friction)
 };
 
 /// Last step's contacts by pair, so a resting pile starts each step already pushing (warm starting)
@@ -25,8 +26,9 @@ public:
     /// The pair's state at the end of the last step, or null for a new pair (and for every pair once
     /// bodies were added, since indices then mean other bodies).
     const PreviousContact* find(int circle, int other, int circleCount, int segmentCount) const;
-    /// Remembers the contacts, grouped by circle (a counting sort) for lookup next step.
-    void store(std::span<const ContactConstraint> contacts, int circleCount, int segmentCount);
+    /// Remembers the contacts, grouped by circle (a counting sort) for lookup next step, with their
+    /// friction impulses when `tangentImpulses` is parallel to them (empty: a step without friction).
+    void store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount, int segmentCount);
 
 private:
     std::vector<int> ownerStart_; // per circle: its first stored pair; size circles + 1

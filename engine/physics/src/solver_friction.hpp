@@ -36,9 +36,11 @@ struct FrictionState {
     std::span<double> omega;        ///< per solver body, rad/s
 };
 
-/// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1).
+/// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1), each
+/// warm started from its pair's impulse at the end of the last step (`records`): a pile's static
+/// friction is held from one step to the next instead of rebuilt from zero, which lets it creep.
 template <class FrictionOf>
-void buildFriction(std::span<const ContactConstraint> contacts, std::span<const Circle> circles,
+void buildFriction(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records, std::span<const Circle> circles,
                    std::span<const Segment> segments, std::span<const double> inverseMass, FrictionOf friction,
                    std::vector<FrictionTerms>& out) {
     out.assign(contacts.size(), FrictionTerms{});
@@ -61,6 +63,7 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
         const double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] + f.armA * f.armA * f.inverseInertiaA + f.armB * f.armB * f.inverseInertiaB;
         f.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         f.friction = mu;
+        f.impulse = records[k].tangentImpulse;
     }
 }
 

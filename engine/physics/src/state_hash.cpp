@@ -35,7 +35,12 @@ void mixMotion(std::uint64_t& h, Vec2 position, Vec2 velocity, double angle, dou
 
 std::uint64_t stateHash(const World& world) {
     std::uint64_t h = kFnvOffset;
-    for (const Circle& c : world.circles()) mixMotion(h, c.position, c.velocity, c.angle, c.angularVelocity);
+    for (const Circle& c : world.circles()) {
+        mixMotion(h, c.position, c.velocity, c.angle, c.angularVelocity);
+        // Sleep decides how the circle moves next: two worlds alike but for it would part ways.
+        mix(h, c.sleep.asleep ? 1.0 : 0.0);
+        mix(h, c.sleep.slowFor);
+    }
     for (const Segment& s : world.segments()) {
         mix(h, s.a.x);
         mix(h, s.a.y);

@@ -21,6 +21,7 @@ struct StepContext {
     std::vector<Impact>& impacts; ///< append every impact resolved, in order
     StepStats& stats;             ///< add impacts, resting contacts, caps hit; set maxEventsInStep
     std::span<const Pivot> pivots = {}; ///< rigid bodies pinned to the world (the solver models them)
+    bool sleep = false;           ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
 };
 
 /// A time-step method: advances every body over dt.
@@ -31,6 +32,9 @@ public:
     /// True when the method turns circles itself (friction torques); otherwise the world carries
     /// each circle's angle on at its constant angular velocity.
     virtual bool integratesRotation() const { return false; }
+    /// True when the method honours asleep circles (and wakes them itself); the world wakes every
+    /// circle before a method that does not.
+    virtual bool keepsSleep() const { return false; }
 };
 
 std::unique_ptr<StepMethod> makeDiscreteMethod();

@@ -4,6 +4,7 @@
 #include "field_forces.hpp"
 #include "kinematic_pose.hpp"
 #include "rope_constraint.hpp"
+#include "solver_sleep.hpp"
 #include "step_method.hpp"
 
 #include <algorithm>
@@ -184,6 +185,10 @@ void World::step() {
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_};
+    // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
+    // their worlds keep every circle awake, as do methods that move every body anyway.
+    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && method_->keepsSleep();
+    if (!context.sleep) wakeAll(circles_);
     // Model no more than a scene needs: a world without ropes never enters either rope pass.
     const bool hasRopes = !ropes_.empty();
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);

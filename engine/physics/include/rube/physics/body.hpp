@@ -41,6 +41,15 @@ struct KinematicPath {
     bool turns() const;
 };
 
+/// How long a dynamic circle has been slow, and whether the solver has put it to sleep (Box2D's
+/// islands: everything touching it was slow as long). An asleep circle has zero velocity and spin;
+/// any change to them from outside (an explosion, a field, the game) wakes its island.
+struct SleepState {
+    bool asleep = false;
+    int island = -1;       ///< asleep: the island it fell asleep with (the index of one of its circles)
+    double slowFor = 0.0;  ///< seconds its speed and its surface's spin speed have stayed below the threshold
+};
+
 /// A circle. Dynamic circles move under gravity and impacts; kinematic ones follow a path.
 struct Circle {
     Vec2 position;
@@ -55,6 +64,7 @@ struct Circle {
     double angle = 0.0;       ///< radians turned since it was placed (counter-clockwise)
     double angularVelocity = 0.0; ///< omega, rad/s
     double inverseInertia = 0.0;  ///< 1 / I about the centre; 0 for kinematic and fixed circles
+    SleepState sleep;             ///< the solver's rest: asleep circles hold still until something reaches them
 };
 
 /// A two-sided line segment from a to b with rounded line caps of `radius` at both ends.

@@ -47,6 +47,11 @@ struct WorldDef {
     double restingSpeed = 0.0;  ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
     int substeps = 8;           ///< solver only: substeps per step
     AirDrag airDrag;            ///< drag of still air on every dynamic circle; none by default
+    /// solver and auto: circles that, with everything they touch, stay under `sleepSpeed` (m/s, and
+    /// their surfaces' spin) for `timeToSleep` seconds rest until something reaches them; 0 never.
+    /// Worlds with ropes or rigid bodies keep every circle awake.
+    double sleepSpeed = 0.01;
+    double timeToSleep = 0.5;   ///< seconds, see sleepSpeed
 };
 
 /// What kind of thing a circle (or a block) hit.

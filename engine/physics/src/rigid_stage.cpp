@@ -43,6 +43,9 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     const std::size_t n = ctx.bodies.size();
     states_.resize(n);
     startPosition_.resize(n);
+    startVelocity_.resize(n);
+    startOmega_.resize(n);
+    gravity_ = ctx.def.gravity;
     reach_.resize(n);
     shapes_.resize(n);
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
@@ -56,6 +59,8 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
         s.inverseMass = dynamic ? b.inverseMass : 0.0;
         s.inverseInertia = dynamic && !b.fixedRotation ? b.inverseInertia : 0.0;
         startPosition_[i] = b.position;
+        startVelocity_[i] = s.velocity;
+        startOmega_[i] = s.omega;
         // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
         reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * extent(b)) * dt +
                     (dynamic ? gravityTravel : 0.0);
@@ -158,7 +163,9 @@ void RigidStage::integratePositions(double h) {
 
 void RigidStage::applyRestitution(double threshold) {
     cache_.store(contacts_); // the last substep's impulses, not restitution's one-off bounce
+    beforeBounce_ = states_;
     applyRigidRestitution(contacts_, view_, threshold);
+    capBounceEnergy();
 }
 
 void RigidStage::finish(StepContext& ctx) const {

@@ -10,6 +10,7 @@
 #include "rigid_warm_start.hpp"
 #include "step_method.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace rube {
@@ -52,12 +53,20 @@ public:
 
 private:
     void findContacts(const StepContext& ctx, double dt);
+    /// After restitution: a body whose every contact is with something fixed keeps at most the energy
+    /// it began the step with; restitution's extra velocity is scaled back to that (rigid_energy.cpp).
+    void capBounceEnergy();
 
     int circleCount_ = 0;
     int substep_ = 0;     // the substep the next warm start begins
     double substepTime_ = 0.0; // h, s
     std::vector<RigidState> states_;
     std::vector<Vec2> startPosition_;
+    std::vector<Vec2> startVelocity_;    // per rigid body, for the energy it began the step with
+    std::vector<double> startOmega_;
+    std::vector<RigidState> beforeBounce_; // the states restitution began from
+    std::vector<std::uint8_t> onlyFixed_;  // per rigid body: every contact's other side is fixed
+    Vec2 gravity_;
     std::vector<double> reach_; // per rigid body: speculative margin for the step
     std::vector<RoundedPolygon> shapes_;
     std::vector<Box> boxes_;

@@ -2,6 +2,7 @@
 #include "rigid_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rube {
 
@@ -42,9 +43,13 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
     return c;
 }
 
-void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view) {
+void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, double h, double maxTurn) {
     for (RigidContact& c : contacts) {
         LoadedBody a = load(view, c.a), b = load(view, c.b);
+        if (std::abs(a.omega) * h > maxTurn || std::abs(b.omega) * h > maxTurn) {
+            for (int k = 0; k < c.count; ++k) c.points[k].normalImpulse = c.points[k].tangentImpulse = 0.0;
+            continue;
+        }
         const Vec2 t = c.normal.perpendicular();
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];

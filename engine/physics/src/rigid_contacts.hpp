@@ -59,8 +59,11 @@ struct RigidContactSoftness {
     double maxPushSpeed = 3.0; ///< m/s: deep overlaps are pushed out no faster
 };
 
-/// Applies every point's last impulses again as the starting guess (warm starting).
-void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view);
+/// Applies every point's last impulses again as the starting guess (warm starting). A contact whose
+/// body turns more than `maxTurn` radians in the substep of length h starts from zero instead: its
+/// anchors have swung so far that the old impulse, applied at the new arms, pumps energy in (a box
+/// struck on a corner at 500 m/s spins at 10^4 rad/s, and warm starting then diverged within one step).
+void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, double h, double maxTurn);
 
 /// Before a substep's impulses: each point that has not pushed yet notes its approach speed -vn.
 /// Measured before any impulse, as Box2D measures it before the step: a point measured inside the sweep

@@ -343,6 +343,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
     // The sweep sees segments at their start, moving with their velocity over the step.
     const SweepInput sweepInput{start_, margins_, bullets_, isBullet_, isDynamic_, cache_, kMaxSweepCellsPerAxis};
     int impacts = sweep_.run(sweepInput, grid_, ctx, dt);
+    if (hasRigid_) impacts += rigid_.sweep(ctx, dt);
     for (Segment& seg : ctx.segments) {
         if (seg.motion() != Motion::kinematic) continue;
         seg.a += seg.velocity * dt;

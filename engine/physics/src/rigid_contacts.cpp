@@ -2,6 +2,7 @@
 #include "rigid_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rube {
 
@@ -42,14 +43,20 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
     return c;
 }
 
-void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidSolverView& view) {
-    for (const RigidContact& c : contacts) {
+void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, double h, double maxTurn) {
+    for (RigidContact& c : contacts) {
         LoadedBody a = load(view, c.a), b = load(view, c.b);
+        if (std::abs(a.omega) * h > maxTurn || std::abs(b.omega) * h > maxTurn) {
+            for (int k = 0; k < c.count; ++k) c.points[k].normalImpulse = c.points[k].tangentImpulse = 0.0;
+            continue;
+        }
         const Vec2 t = c.normal.perpendicular();
         for (int k = 0; k < c.count; ++k) {
-            const RigidContactPoint& p = c.points[k];
+            RigidContactPoint& p = c.points[k];
             const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
             const Vec2 impulse = c.normal * p.normalImpulse + t * p.tangentImpulse;
+            p.deliveredNormal += p.normalImpulse;
+            p.deliveredTangent += p.tangentImpulse;
             applyImpulse(a, rA, -impulse);
             applyImpulse(b, rB, impulse);
         }
@@ -61,11 +68,23 @@ void warmStartRigidContacts(std::span<const RigidContact> contacts, const RigidS
 void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view, int substep) {
     for (RigidContact& c : contacts) {
         const LoadedBody a = load(view, c.a), b = load(view, c.b);
+        const Vec2 n = c.normal, t = n.perpendicular();
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
             if (p.maxNormalImpulse > 0.0) continue;
             const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
-            p.approachSpeed = -c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+            double vn = n.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+            // Take back what this contact's own impulses did to vn: impulse P along d at point j changes
+            // point k's vn by P [(n . d)(1/mA + 1/mB) + (rAk x n)(rAj x d) / IA + (rBk x n)(rBj x d) / IB].
+            for (int j = 0; j < c.count; ++j) {
+                const RigidContactPoint& q = c.points[j];
+                if (q.deliveredNormal == 0.0 && q.deliveredTangent == 0.0) continue;
+                const Vec2 qA = currentArm(a, q.anchorA), qB = currentArm(b, q.anchorB);
+                const double ka = a.inverseInertia * rA.cross(n), kb = b.inverseInertia * rB.cross(n);
+                vn -= q.deliveredNormal * (a.inverseMass + b.inverseMass + ka * qA.cross(n) + kb * qB.cross(n));
+                vn -= q.deliveredTangent * (ka * qA.cross(t) + kb * qB.cross(t));
+            }
+            p.approachSpeed = -vn;
             p.touchSubstep = substep;
         }
     }
@@ -96,6 +115,7 @@ void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView&
             const double total = std::max(p.normalImpulse + lambda, 0.0);
             const double delta = total - p.normalImpulse;
             p.normalImpulse = total;
+            p.deliveredNormal += delta;
             p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
             applyImpulse(a, rA, c.normal * -delta);
             applyImpulse(b, rB, c.normal * delta);
@@ -110,6 +130,7 @@ void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView&
                 const double total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
                 const double delta = total - p.tangentImpulse;
                 p.tangentImpulse = total;
+                p.deliveredTangent += delta;
                 applyImpulse(a, rA, t * -delta);
                 applyImpulse(b, rB, t * delta);
             }

@@ -18,6 +18,8 @@ constexpr double kReferenceTolerance = 0.0005;
 /// cos of 8 degrees: a closest-points direction further off the best face than this is a corner or a
 /// cap touching first, and gets one point along that direction instead of a clipped face.
 constexpr double kFaceAlignment = 0.99;
+/// Cores crossing by more than this (m) overlap; less is rounding on two segments lying along one line.
+constexpr double kCoreOverlap = 1e-9;
 /// The id of the one point of two rounded ends (corner or cap) touching first: no face is involved.
 constexpr std::uint32_t kRoundedId = 0xffffu;
 
@@ -120,6 +122,15 @@ RoundedPolygon makeRoundedPolygon(const Circle& circle) {
 }
 
 RoundedPolygon makeRoundedPolygon(const Segment& segment) { return twoVertex(segment.a, segment.b, segment.radius); }
+
+double coreDistance(const RoundedPolygon& a, const RoundedPolygon& b, Vec2& pa, Vec2& pb) {
+    // Two convex polygons are apart exactly when one of their edge normals separates them (a segment's
+    // two normals are its only ones); vertex against edge then finds the closest pair.
+    int edge = -1;
+    const double separation = std::max(maxSeparation(a, b, edge), maxSeparation(b, a, edge));
+    if (separation < -kCoreOverlap) return -1.0;
+    return closestPoints(a, b, pa, pb);
+}
 
 Manifold collideRoundedPolygons(const RoundedPolygon& a, const RoundedPolygon& b, double speculative) {
     Manifold m;

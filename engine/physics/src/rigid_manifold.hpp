@@ -42,6 +42,10 @@ struct Manifold {
     int count = 0;
 };
 
+/// The distance between the cores of A and B (each of two or four vertices), with their closest
+/// points pa and pb; -1 when the cores overlap (no separating axis among both shapes' edge normals).
+double coreDistance(const RoundedPolygon& a, const RoundedPolygon& b, Vec2& pa, Vec2& pb);
+
 /// The contact manifold of A and B, keeping only points whose gap is below `speculative` (m):
 /// touching and overlapping points, and those close enough to touch within the step.
 Manifold collideRoundedPolygons(const RoundedPolygon& a, const RoundedPolygon& b, double speculative);

@@ -10,9 +10,12 @@
 #include "rigid_warm_start.hpp"
 #include "step_method.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace rube {
+
+struct SweptShape;
 
 /// The rigid bodies, their contacts and pivots during the solver's step.
 class RigidStage {
@@ -43,6 +46,10 @@ public:
     /// Reports every rigid contact that first touched this step faster than the resting speed as an
     /// Impact (counted in the stats, as the circle contacts' are) and returns how many (rigid_impacts.cpp).
     int recordImpacts(StepContext& ctx) const;
+    /// The continuous pass, after finish() and before kinematic segments move: a body that moved or
+    /// turned further than its half thickness and ends through a segment it met on the way is put back
+    /// at its time of impact and bounced there; returns the impacts recorded (rigid_sweep.cpp).
+    int sweep(StepContext& ctx, double dt);
 
     /// An axis-aligned bounding box, for the pair test.
     struct Box {
@@ -52,12 +59,29 @@ public:
 
 private:
     void findContacts(const StepContext& ctx, double dt);
+    /// After restitution: a body whose every contact is with something fixed keeps at most the energy
+    /// it began the step with; restitution's extra velocity is scaled back to that (rigid_energy.cpp).
+    void capBounceEnergy();
+    /// Replaces rigid body i's step with its free flight under gravity (rigid_energy.cpp).
+    void runFree(std::size_t i);
+    bool resolveSweptHit(StepContext& ctx, std::size_t body, int segment, const SweptShape& shape, double t, double dt);
 
     int circleCount_ = 0;
     int substep_ = 0;     // the substep the next warm start begins
     double substepTime_ = 0.0; // h, s
     std::vector<RigidState> states_;
     std::vector<Vec2> startPosition_;
+    std::vector<double> startAngle_;
+    std::vector<Vec2> startVelocity_;    // per rigid body, for the energy it began the step with
+    std::vector<double> startOmega_;
+    std::vector<RigidState> beforeBounce_; // the states restitution began from
+    std::vector<std::uint8_t> onlyFixed_;  // per rigid body: every contact's other side is unmovable, all at one velocity
+    std::vector<std::uint8_t> seenFrame_;  // per rigid body: frame_ holds its partners' velocity
+    std::vector<Vec2> frame_;              // per rigid body: the velocity of its unmovable partners
+    std::vector<double> thickness_;        // per rigid body: half its thinnest width, m
+    Vec2 gravity_;
+    double stepTime_ = 0.0; // dt, s
+    int substeps_ = 1;
     std::vector<double> reach_; // per rigid body: speculative margin for the step
     std::vector<RoundedPolygon> shapes_;
     std::vector<Box> boxes_;

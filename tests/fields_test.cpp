@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace rube;
@@ -51,6 +52,27 @@ TEST_CASE("fields: a falling ball under linear drag reaches the terminal speed m
         for (int i = 0; i < 60; ++i) early.step();
         const double t = early.time();
         CHECK(early.circles()[0].velocity.y == Approx(-terminal * -std::expm1(-k * t / m)).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("fields: under linear drag the exact methods move a ball along the exact x(t) and y(t)", "[fields][drag]") {
+    // dv/dt = g - k v / m from v0: x(t) = x0 + v_t t + (v0 - v_t) tau (1 - e^{-t/tau}), tau = m / k, v_t = g tau.
+    // The drag is split around the method's move, so exact and auto (exact here) follow it to round-off.
+    const double m = 0.5, r = 0.25, linear = 2.0, g = 9.81;
+    const double k = 2.0 * r * linear, tau = m / k;
+    const Vec2 v0{6.0, 1.5};
+    for (const Method method : {Method::exact, Method::automatic}) {
+        CAPTURE(methodName(method));
+        World world = openWorld(method, {0.0, -g}, AirDrag{linear, 0.0});
+        addBall(world, m, r, v0);
+        double worst = 0.0;
+        for (int i = 0; i < 180; ++i) {
+            world.step();
+            const double t = world.time(), share = -std::expm1(-t / tau);
+            const Vec2 expected{v0.x * tau * share, -g * tau * t + (v0.y + g * tau) * tau * share};
+            worst = std::max(worst, (world.circles()[0].position - expected).length());
+        }
+        CHECK(worst < 1e-12);
     }
 }
 

@@ -79,3 +79,4 @@ TEST_CASE("paddle: first and goal frames", "[screenshot][level]") { checkLevel("
 TEST_CASE("seesaw: first and goal frames", "[screenshot][level]") { checkLevel("seesaw"); }
 TEST_CASE("crates: first and goal frames", "[screenshot][level]") { checkLevel("crates"); }
 TEST_CASE("water: first and goal frames", "[screenshot][level]") { checkLevel("water"); }
+TEST_CASE("feather: first and goal frames", "[screenshot][level]") { checkLevel("feather"); }

@@ -21,7 +21,7 @@ namespace {
 
 const char* const kLevels[] = {"ramp",   "cannon-arc", "moving-target", "chain-reaction", "newton",
                                "bucket", "trampoline", "balloon",       "magnet",         "fan",
-                               "rope",   "paddle", "seesaw", "crates", "water"};
+                               "rope",   "paddle", "seesaw", "crates", "water", "feather"};
 
 SceneDesc loadLevel(const std::string& name) {
     const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".toml"));

@@ -95,6 +95,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
     drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
+    drawAirDrag(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
     std::vector<char> itemCircle(world.circles().size(), 0);
     for (std::size_t i = 0; i < run.items().size(); ++i)

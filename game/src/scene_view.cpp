@@ -149,6 +149,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     drawConveyors(world, list);
     drawRopes(world, list);
     drawRigidBodies(world, list);
+    drawAirDrag(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.

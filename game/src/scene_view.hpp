@@ -24,6 +24,9 @@ void drawRigidBodies(const World& world, render::DrawList& list);
 /// Draws chevrons along every conveyor (a segment with a surface speed), pointing the way its
 /// surface runs and travelling at that speed with the world's time, so a still belt and a running one differ.
 void drawConveyors(const World& world, render::DrawList& list);
+/// Draws the air's push on every dynamic ball of a world with air drag: streaks behind it along -v, 0.6 m
+/// long per g of drag deceleration (so a ball at its terminal speed trails 0.6 m); nothing without air drag.
+void drawAirDrag(const World& world, render::DrawList& list);
 /// Draws every pool of water as a translucent band, its top edge the surface; drawn in front of what floats in it.
 void drawWaters(const World& world, render::DrawList& list);
 

@@ -13,6 +13,10 @@ namespace rube {
 void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag& airDrag, Vec2 gravity, double time,
                  double dt);
 
+/// The second half of linear air drag's step, after the method's move: maps each dynamic circle's
+/// velocity onto the exact v(dt) of dv/dt = g - k v, so that position and velocity are both exact.
+void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt);
+
 /// Which part of a thruster's impulse over a step: the kick before the method moves the bodies, or the rest after.
 enum class BurnShare { beforeMove, afterMove };
 

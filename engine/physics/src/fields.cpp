@@ -9,14 +9,27 @@ namespace rube {
 
 namespace {
 
-// Linear drag on top of gravity, dv/dt = g - k v, has the exact solution
-// v(dt) = v e^{-k dt} + g (1 - e^{-k dt}) / k. The method adds g dt itself afterwards, so the kick
-// is the difference: then a falling ball's speed after each step is exact, and the terminal speed
-// is g / k to round-off at any time step. (1 - e^{-x}) is -expm1(-x), exact for small k dt.
+// Linear drag on top of gravity, dv/dt = g - k v, has the exact solution (v_t = g / k, a = e^{-k dt})
+//   v(dt) = v_t + (v - v_t) a,   x(dt) - x = v_t dt + (v - v_t) (1 - a) / k.
+// The method moves a body at its velocity u plus gravity, x += u dt + g dt^2 / 2, and adds g dt. As for
+// a thruster the change is split around that move: before it, u = v_t + phi (v - v_t) - g dt / 2 with
+// phi = (1 - a) / (k dt), so the move lands exactly on x(dt); after it (linearDragAfterMove) the
+// velocity w = u + g dt is mapped onto v(dt). Both position and velocity are then exact at every step,
+// and the terminal speed is g / k to round-off. (1 - a) is -expm1(-k dt), exact for small k dt.
+struct LinearDragStep {
+    double phi;   // (1 - e^{-k dt}) / (k dt): the share of v - v_t the move carries
+    double after; // e^{-k dt} / phi: how the velocity after the move is scaled onto v(dt)
+};
+
+LinearDragStep linearDragStep(double k, double dt) {
+    const double phi = -std::expm1(-k * dt) / (k * dt);
+    return {phi, std::exp(-k * dt) / phi};
+}
+
 Vec2 linearDragKick(Vec2 v, Vec2 gravity, double k, double dt) {
-    const double decay = std::exp(-k * dt);
-    const double gain = -std::expm1(-k * dt) / k;
-    return v * decay + gravity * gain - (v + gravity * dt);
+    const Vec2 terminal = gravity / k;
+    const double phi = linearDragStep(k, dt).phi;
+    return terminal + (v - terminal) * phi - gravity * (0.5 * dt) - v;
 }
 
 // Quadratic drag has no closed form with gravity in 2-D; v <- v / (1 + k |v| dt) is the
@@ -81,6 +94,16 @@ void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag&
         c.velocity += kick;
     }
     kickThrusters(circles, fields.thrusters, time, dt, BurnShare::beforeMove);
+}
+
+void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt) {
+    for (Circle& c : circles) {
+        if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
+        const double k = 2.0 * c.radius * airDrag.linear * c.inverseMass;
+        const Vec2 terminal = gravity / k;
+        // v(dt) = v_t + (w - v_t - g dt / 2) e^{-k dt} / phi: undoes the share the move carried (see linearDragKick).
+        c.velocity = terminal + (c.velocity - terminal - gravity * (0.5 * dt)) * linearDragStep(k, dt).after;
+    }
 }
 
 void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, double time, double dt, BurnShare share) {

@@ -195,6 +195,8 @@ void World::step() {
     method_->step(context, dt);
     // The rest of each thruster's impulse, after the move (see kickThrusters): exact for a constant force.
     if (!fields_.thrusters.empty()) kickThrusters(circles_, fields_.thrusters, time_, dt, BurnShare::afterMove);
+    // The rest of linear air drag's step, likewise (see linearDragAfterMove): exact x(t) and v(t) in free flight.
+    if (def_.airDrag.linear > 0.0) linearDragAfterMove(circles_, def_.airDrag, def_.gravity, dt);
     if (hasRopes) enforceRopes(circles_, ropes_, ropeStarts_, impacts_, dt);
     // Methods that do not model friction cannot change a spin; it carries the angle on (none of
     // them pays for it unless something spins).

@@ -7,8 +7,8 @@
 /// Delta v = F dt / m, lecture 3), before the time-step method moves the bodies. This splits the
 /// field from the collision handling, so every method supports fields the same way; the price is
 /// that the exact method stays exact only for gravity alone: where a field acts, its motion is
-/// first-order in dt (except linear drag, integrated exactly below, and a thruster, whose impulse is
-/// split around the move so that a constant force moves a body exactly, x = F t^2 / (2m)).
+/// first-order in dt (except linear drag and a thruster, whose changes are split around the move so
+/// that the body moves exactly: x(t) of dv/dt = g - k v / m, and x = F t^2 / (2m)).
 
 #include "rube/physics/vec2.hpp"
 

@@ -89,48 +89,49 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
                           std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep) {
     const int circleCount = static_cast<int>(circles.size());
     const double limit2 = sleepSpeed * sleepSpeed;
-    const auto awakeDynamic = [&](int i) {
-        const Circle& c = circles[static_cast<std::size_t>(i)];
-        return c.motion == Motion::dynamic && c.inverseMass > 0.0 && !c.sleep.asleep;
-    };
-    int ready = 0;
+    // Per circle: not an awake dynamic circle, awake but not slow for long enough, or ready to sleep.
+    enum : std::uint8_t { other, awake, ready };
+    state_.assign(static_cast<std::size_t>(circleCount), other);
+    int readyCount = 0;
     for (int i = 0; i < circleCount; ++i) {
-        if (!awakeDynamic(i)) continue;
         Circle& c = circles[static_cast<std::size_t>(i)];
+        if (c.motion != Motion::dynamic || c.inverseMass <= 0.0 || c.sleep.asleep) continue;
         const double spin = c.angularVelocity * c.radius; // the surface's speed about the centre
         const bool slow = c.velocity.lengthSquared() < limit2 && spin * spin < limit2;
         c.sleep.slowFor = slow ? c.sleep.slowFor + dt : 0.0;
-        if (c.sleep.slowFor >= timeToSleep) ++ready;
+        const bool isReady = c.sleep.slowFor >= timeToSleep;
+        state_[static_cast<std::size_t>(i)] = isReady ? ready : awake;
+        readyCount += isReady;
     }
     // Model no more than the scene needs: islands are only built once some circle could sleep.
-    if (ready == 0) return;
+    if (readyCount == 0) return;
+    // An island sleeps when every member is ready and none is carried. So only ready circles are
+    // joined; a ready circle touching an awake one, or pushed by a moving kinematic body, blocks its
+    // whole island instead. Every contact counts, speculative ones too: a neighbour close enough to be
+    // one would wake the island straight away (wakeReached), so it must sleep with it or not at all.
     parent_.resize(static_cast<std::size_t>(circleCount));
     for (int i = 0; i < circleCount; ++i) parent_[static_cast<std::size_t>(i)] = i;
-    islandCarried_.assign(static_cast<std::size_t>(circleCount), 0);
+    blocked_.assign(static_cast<std::size_t>(circleCount), 0);
+    const auto block = [&](int i) { blocked_[static_cast<std::size_t>(i)] = 1; }; // folded into its root below
     for (const ContactConstraint& c : contacts) {
-        // Every contact joins, speculative ones too: a neighbour close enough to be one would wake
-        // the island straight away (wakeReached), so it must sleep with it or not at all.
-        if (!awakeDynamic(c.a)) continue;
+        const std::uint8_t a = state_[static_cast<std::size_t>(c.a)];
+        if (a == other) continue;
         if (c.b < circleCount) {
-            const Circle& other = circles[static_cast<std::size_t>(c.b)];
-            if (awakeDynamic(c.b)) parent_[static_cast<std::size_t>(find(c.a))] = find(c.b);
-            else if (c.impulse > 0.0 && movingKinematic(other)) islandCarried_[static_cast<std::size_t>(c.a)] = 1;
-        } else if (c.impulse > 0.0 && movingKinematic(segments[static_cast<std::size_t>(c.b - circleCount)])) {
-            islandCarried_[static_cast<std::size_t>(c.a)] = 1; // folded into its root below
+            const std::uint8_t b = state_[static_cast<std::size_t>(c.b)];
+            if (a == ready && b == ready) parent_[static_cast<std::size_t>(find(c.a))] = find(c.b);
+            else if (a == ready && b == awake) block(c.a);
+            else if (a == awake && b == ready) block(c.b);
+            else if (a == ready && b == other && c.impulse > 0.0 && movingKinematic(circles[static_cast<std::size_t>(c.b)])) block(c.a);
+        } else if (a == ready && c.impulse > 0.0 && movingKinematic(segments[static_cast<std::size_t>(c.b - circleCount)])) {
+            block(c.a);
         }
     }
-    islandSlowFor_.assign(static_cast<std::size_t>(circleCount), timeToSleep);
-    std::vector<std::uint8_t>& carried = islandCarried_;
+    for (int i = 0; i < circleCount; ++i)
+        if (blocked_[static_cast<std::size_t>(i)]) blocked_[static_cast<std::size_t>(find(i))] = 1;
     for (int i = 0; i < circleCount; ++i) {
-        if (!awakeDynamic(i)) continue;
-        const auto root = static_cast<std::size_t>(find(i));
-        islandSlowFor_[root] = std::min(islandSlowFor_[root], circles[static_cast<std::size_t>(i)].sleep.slowFor);
-        if (carried[static_cast<std::size_t>(i)]) carried[root] = 1;
-    }
-    for (int i = 0; i < circleCount; ++i) {
-        if (!awakeDynamic(i)) continue;
+        if (state_[static_cast<std::size_t>(i)] != ready) continue;
         const int root = find(i);
-        if (carried[static_cast<std::size_t>(root)] || islandSlowFor_[static_cast<std::size_t>(root)] < timeToSleep) continue;
+        if (blocked_[static_cast<std::size_t>(root)]) continue;
         Circle& c = circles[static_cast<std::size_t>(i)];
         c.velocity = {};
         c.angularVelocity = 0.0;

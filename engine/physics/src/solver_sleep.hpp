@@ -45,9 +45,9 @@ private:
     int find(int i);
     void wakeIsland(std::span<Circle> circles, int island);
 
-    std::vector<int> parent_;                 // union-find over circles
-    std::vector<double> islandSlowFor_;       // per root: the least slowFor of its members
-    std::vector<std::uint8_t> islandCarried_; // per root: touches a moving kinematic body
+    std::vector<int> parent_;            // union-find over the circles ready to sleep
+    std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
+    std::vector<std::uint8_t> blocked_;  // per circle, then per root: touches an awake circle or a moving kinematic body
     std::vector<int> asleep_;                 // scratch: the sleepers this step
     bool woke_ = false;
 };

@@ -59,6 +59,20 @@ bool runsInScaling(const bench::Engine& engine) {
     return engine.kind == bench::EngineKind::peer || engine.name == "rube-solver";
 }
 
+// With sleeping, a pile's cost per body-step is mostly how soon it comes to rest (the 100-ball pile
+// sleeps at 3 s, the 20,000-ball one, wide on its frictionless floor, not within the 10 s), not how
+// the solver's work grows with N. So the sweep runs rube's solver a second time with sleeping off:
+// every body solved every step, the curve the scaling target is about.
+bench::Engine awakeVariant(const bench::Engine& engine) {
+    bench::Engine awake = engine;
+    awake.name = engine.name + "-awake";
+    awake.make = [make = engine.make](bench::WorldSpec spec) {
+        spec.rubeSleep = false;
+        return make(spec);
+    };
+    return awake;
+}
+
 // The failure table: every probe on every method, written as Markdown. Returns false if unwritable.
 bool writeFailures(const std::string& path, bool quick) {
     const auto start = std::chrono::steady_clock::now();
@@ -109,7 +123,11 @@ int main(int argc, char** argv) {
     std::stable_sort(engines.begin(), engines.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
     if (list) {
         for (const auto& s : bench::scenes()) std::cout << "scene  " << s.name << "  (" << s.errorName << ")\n";
-        for (const auto& e : engines) std::cout << "engine " << e.name << '\n';
+        for (const auto& e : engines) {
+            std::cout << "engine " << e.name << '\n';
+            if (e.kind == bench::EngineKind::rubeMethod && runsInScaling(e))
+                std::cout << "engine " << awakeVariant(e).name << "  (scaling sweep only: sleeping off)\n";
+        }
         return 0;
     }
 
@@ -140,8 +158,14 @@ int main(int argc, char** argv) {
         (scaling ? scalingOrder : sceneOrder).push_back(scene.name);
         bench::RunOptions sceneOptions = options;
         if (scaling) sceneOptions.runTimeLimit = std::max(options.runTimeLimit, kScalingRunLimit);
+        std::vector<bench::Engine> sceneEngines;
         for (const auto& engine : engines) {
-            if (!selected(engineFilter, engine.name) || (scaling && !runsInScaling(engine))) continue;
+            if (!scaling || !runsInScaling(engine)) continue;
+            sceneEngines.push_back(engine);
+            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep) sceneEngines.push_back(awakeVariant(engine));
+        }
+        for (const auto& engine : scaling ? sceneEngines : engines) {
+            if (!selected(engineFilter, engine.name)) continue;
             if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly && scene.scalingBodies > kFullRunPeerScalingBodies) {
                 std::fprintf(stderr, "%-18s %-16s left out of the full run (cost): rube_bench --scaling runs it\n",
                              scene.name.c_str(), engine.name.c_str());

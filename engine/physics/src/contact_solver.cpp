@@ -47,7 +47,8 @@ void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<Solve
         if constexpr (Friction) {
             const FrictionTerms& f = friction->terms[k];
             if (f.impulse != 0.0) // a contact without friction (mu = 0) never holds an impulse
-                applyFriction(c, f, f.impulse, invMassA, invMassB, bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
+                applyFriction(c, friction->bodies[c.a], friction->bodies[c.b], f.impulse, invMassA, invMassB, bodies[c.a], bodies[c.b],
+                              friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }
@@ -96,7 +97,8 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
             FrictionTerms& f = friction->terms[k];
             // Friction is bounded by mu times the normal impulse: a contact that does not push and
             // holds no friction impulse (a speculative one, most of a pile's) has none to solve.
-            if (f.friction > 0.0 && (c.impulse > 0.0 || f.impulse != 0.0)) solveFriction(c, f, invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
+            if (f.friction > 0.0 && (c.impulse > 0.0 || f.impulse != 0.0))
+                solveFriction(c, f, friction->bodies[c.a], friction->bodies[c.b], invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }

@@ -106,6 +106,7 @@ private:
     // Rotation and friction, touched only in steps where some circle spins or some pair has friction.
     bool anyRotation_ = false;
     std::vector<FrictionTerms> frictions_; // parallel to contacts_ in steps with rotation
+    std::vector<FrictionBody> frictionBodies_; // per solver body in steps with rotation
     std::vector<double> tangentImpulses_;  // scratch: the friction impulses the cache keeps
     std::vector<double> omega_;           // per solver body: angular velocity (segments stay 0)
     std::vector<int> rotating_;           // circles that turn this step
@@ -259,12 +260,13 @@ void SolverMethod::findFriction(const StepContext& ctx) {
     const auto& circles = ctx.circles;
     const auto& segments = ctx.segments;
     // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
-    buildFriction(contacts_, records_, circles, segments, inverseMass_, [&](std::size_t k) {
+    buildFriction(contacts_, records_, circles, inverseMass_, [&](std::size_t k) {
         const ContactConstraint& c = contacts_[k];
         const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
                                                 : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
         return circles[static_cast<std::size_t>(c.a)].material.friction * other;
     }, frictions_);
+    buildFrictionBodies(circles, segments, bodies_.size(), frictionBodies_);
     omega_.assign(bodies_.size(), 0.0);
     marks_.assign(ctx.circles.size(), 0);
     const auto list = [&](int body) {
@@ -295,7 +297,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     const int relaxIterations = fastStep_ ? kFastRelaxIterations : kRelaxIterations;
     // Friction is solved with the soft sweep only: the relax passes restore the normal velocities
     // the push-out added, which friction does not depend on (and a third of the cost is saved).
-    FrictionState frictionState{frictions_, omega_};
+    FrictionState frictionState{frictions_, frictionBodies_, omega_};
     const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
     if (hasRigid_) rigid_.bind(bodies_, anyRotation_ ? std::span<double>(omega_) : std::span<double>{}, ctx.circles);
     for (int k = 0; k < substeps; ++k) {

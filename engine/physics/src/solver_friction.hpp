@@ -18,30 +18,47 @@
 
 namespace rube {
 
-/// Friction at one contact, parallel to its ContactConstraint (same index).
+/// Friction at one contact, parallel to its ContactConstraint (same index). 24 bytes: the soft
+/// sweep streams these beside the contacts every substep, and in a 20,000-ball pile neither fits in
+/// cache, so what belongs to a body (arm, inertia, a belt's speed) is read from its FrictionBody.
 struct FrictionTerms {
-    double armA = 0.0;            ///< rA: centre of a to the contact point, m (its radius)
-    double armB = 0.0;            ///< rB: the same for b; 0 for segments, which never turn
-    double inverseInertiaA = 0.0; ///< 1 / I of a
-    double inverseInertiaB = 0.0; ///< 1 / I of b; 0 for segments and infinite mass
-    double tangentMass = 0.0;     ///< 1 / (1/mA + 1/mB + rA^2/IA + rB^2/IB): effective mass along t
-    double friction = 0.0;        ///< mu of the pair; 0 skips the contact
-    double impulse = 0.0;         ///< accumulated tangential impulse this step
-    Vec2 surfaceVelocityB;        ///< a conveyor's moving surface: b's contact point moves this much faster
+    double tangentMass = 0.0; ///< 1 / (1/mA + 1/mB + rA^2/IA + rB^2/IB): effective mass along t
+    double friction = 0.0;    ///< mu of the pair; 0 skips the contact
+    double impulse = 0.0;     ///< accumulated tangential impulse this step
 };
 
-/// What the contact sweeps need for friction: the terms per contact and each solver body's omega.
-struct FrictionState {
-    std::span<FrictionTerms> terms; ///< parallel to the contacts
-    std::span<double> omega;        ///< per solver body, rad/s
+/// A solver body as friction sees it: the arm from its centre to a contact point, how much a unit
+/// tangential impulse there turns it, and how fast its surface moves (a conveyor's belt). Segments
+/// never turn: arm and turn 0.
+struct FrictionBody {
+    double arm = 0.0;            ///< r: a circle's radius
+    double turnPerImpulse = 0.0; ///< r / I, rad/s per N s
+    Vec2 surfaceVelocity;        ///< a conveyor's belt velocity along the segment, m/s
 };
+
+/// What the contact sweeps need for friction: the terms per contact, and each solver body's arm and omega.
+struct FrictionState {
+    std::span<FrictionTerms> terms;         ///< parallel to the contacts
+    std::span<const FrictionBody> bodies;   ///< per solver body
+    std::span<double> omega;                ///< per solver body, rad/s
+};
+
+/// Each solver body's friction side: circles 0..n-1, then segments (a belt's surface velocity).
+inline void buildFrictionBodies(std::span<const Circle> circles, std::span<const Segment> segments, std::size_t bodyCount,
+                                std::vector<FrictionBody>& out) {
+    out.assign(bodyCount, FrictionBody{});
+    for (std::size_t i = 0; i < circles.size(); ++i) out[i] = {circles[i].radius, circles[i].inverseInertia * circles[i].radius, {}};
+    for (std::size_t s = 0; s < segments.size(); ++s)
+        if (segments[s].surfaceSpeed != 0.0)
+            out[circles.size() + s].surfaceVelocity = (segments[s].b - segments[s].a).normalized() * segments[s].surfaceSpeed;
+}
 
 /// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1), each
 /// warm started from its pair's impulse at the end of the last step (`records`): a pile's static
 /// friction is held from one step to the next instead of rebuilt from zero, which lets it creep.
 template <class FrictionOf>
 void buildFriction(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records, std::span<const Circle> circles,
-                   std::span<const Segment> segments, std::span<const double> inverseMass, FrictionOf friction,
+                   std::span<const double> inverseMass, FrictionOf friction,
                    std::vector<FrictionTerms>& out) {
     out.assign(contacts.size(), FrictionTerms{});
     const int circleCount = static_cast<int>(circles.size());
@@ -51,16 +68,11 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
         const ContactConstraint& c = contacts[k];
         FrictionTerms& f = out[k];
         const Circle& ca = circles[static_cast<std::size_t>(c.a)];
-        f.armA = ca.radius;
-        f.inverseInertiaA = ca.inverseInertia;
+        double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] + ca.radius * ca.radius * ca.inverseInertia;
         if (c.b < circleCount) {
             const Circle& cb = circles[static_cast<std::size_t>(c.b)];
-            f.armB = cb.radius;
-            f.inverseInertiaB = cb.inverseInertia;
-        } else if (const Segment& s = segments[static_cast<std::size_t>(c.b - circleCount)]; s.surfaceSpeed != 0.0) {
-            f.surfaceVelocityB = (s.b - s.a).normalized() * s.surfaceSpeed;
+            kt += cb.radius * cb.radius * cb.inverseInertia;
         }
-        const double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] + f.armA * f.armA * f.inverseInertiaA + f.armB * f.armB * f.inverseInertiaB;
         f.tangentMass = kt > 0.0 ? 1.0 / kt : 0.0;
         f.friction = mu;
         f.impulse = records[k].tangentImpulse;
@@ -68,25 +80,25 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
 }
 
 /// Applies a tangential impulse lambda t at the contact: on a, and its opposite on b.
-inline void applyFriction(const ContactConstraint& c, const FrictionTerms& f, double lambda, double invMassA, double invMassB,
-                          SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
+inline void applyFriction(const ContactConstraint& c, const FrictionBody& fa, const FrictionBody& fb, double lambda, double invMassA,
+                          double invMassB, SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
     const Vec2 p = c.normal.perpendicular() * lambda;
     a.velocity += p * invMassA;
     b.velocity -= p * invMassB;
-    omegaA -= f.inverseInertiaA * f.armA * lambda;
-    omegaB -= f.inverseInertiaB * f.armB * lambda;
+    omegaA -= fa.turnPerImpulse * lambda;
+    omegaB -= fb.turnPerImpulse * lambda;
 }
 
 /// One friction update at a contact: drives the slip speed to zero within the Coulomb cone
 /// |lambda_t| <= mu lambda_n, using the contact's normal impulse as it stands now.
-inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, double invMassA, double invMassB, SolverBody& a,
-                          SolverBody& b, double& omegaA, double& omegaB) {
-    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - f.surfaceVelocityB) - f.armA * omegaA - f.armB * omegaB;
+inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, const FrictionBody& fa, const FrictionBody& fb, double invMassA,
+                          double invMassB, SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
+    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - fb.surfaceVelocity) - fa.arm * omegaA - fb.arm * omegaB;
     const double limit = f.friction * c.impulse;
     const double total = std::clamp(f.impulse - f.tangentMass * vt, -limit, limit);
     const double delta = total - f.impulse;
     f.impulse = total;
-    applyFriction(c, f, delta, invMassA, invMassB, a, b, omegaA, omegaB);
+    applyFriction(c, fa, fb, delta, invMassA, invMassB, a, b, omegaA, omegaB);
 }
 
 } // namespace rube

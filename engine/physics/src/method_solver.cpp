@@ -69,7 +69,7 @@ public:
             prepareBodies(ctx, dt);
             findContacts(ctx, dt);
         }
-        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_);
+        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_, frictionBodies_);
         solve(ctx, dt);
         finish(ctx, dt);
     }
@@ -252,6 +252,7 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
     hasRigid_ = !ctx.bodies.empty();
     if (hasRigid_) rigid_.prepare(ctx, dt);
     frictions_.clear();
+    frictionBodies_.clear();
     rotating_.clear();
     if (anyRotation_) findFriction(ctx);
 }

@@ -1,6 +1,6 @@
 # The "bench: quick" test: runs rube_bench --quick and checks that the CSV it writes is well formed
 # (a header, the same number of fields on every row, numbers where numbers belong, every scene on
-# every rube method, the scaling sweep's smallest point and a failure table row per method).
+# every rube method, the scaling sweep's smallest point asleep and awake and a failure table row per method).
 # It checks that the bench runs, never how fast: CI machines vary too much.
 # Usage: cmake -DBENCH=<rube_bench> -DCSV=<file> -DFAILURES=<file> -P quick_test.cmake
 
@@ -55,8 +55,14 @@ foreach(scene bounce projectile pool-break ball-stack pile bullet newton-cradle 
     endif()
   endforeach()
 endforeach()
-if(NOT "pile-scaling-100/rube-solver" IN_LIST seen)
-  message(FATAL_ERROR "${CSV}: no row for the scaling sweep's pile-scaling-100 on rube-solver")
+foreach(engine rube-solver rube-solver-awake)
+  if(NOT "pile-scaling-100/${engine}" IN_LIST seen)
+    message(FATAL_ERROR "${CSV}: no row for the scaling sweep's pile-scaling-100 on ${engine}")
+  endif()
+endforeach()
+# The awake variant belongs to the scaling sweep only.
+if("pile/rube-solver-awake" IN_LIST seen)
+  message(FATAL_ERROR "${CSV}: rube-solver-awake ran outside the scaling sweep")
 endif()
 
 # The failure table: a Markdown table with one row per method, each cell a failing value or "holds".

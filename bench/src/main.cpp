@@ -103,13 +103,13 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", quick, "tiny scenes, one repeat, two time steps: checks the bench runs, not its speed");
     app.add_flag("--list", list, "list the scenes and engines and exit");
     app.add_option("--csv", csvPath, "results file (default: bench/results/<date>-<host>.csv, --scaling: <date>-<host>-scaling.csv; --quick: ./bench-quick.csv)");
-    app.add_option("--chart", chartPath, "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none)");
-    app.add_option("--scaling-chart", scalingChartPath, "scaling chart PNG (default: screenshots/scaling.png; --quick: none)");
+    app.add_option("--chart", chartPath, "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none; \"\": none)");
+    app.add_option("--scaling-chart", scalingChartPath, "scaling chart PNG (default: screenshots/scaling.png; --quick: none; \"\": none)");
     app.add_flag("--no-scaling", noScaling, "leave out the scaling sweep (pile-scaling-*)");
     app.add_flag("--scaling", scalingOnly, "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
     app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
     app.add_option("--failures-md", failuresPath, "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
-    app.add_option("--front-md", frontPath, "where auto stands against the other methods and peers, per scene and step (default: bench/results/auto-front.md; --quick: ./auto-front-quick.md)");
+    app.add_option("--front-md", frontPath, "where auto stands against the other methods and peers, per scene and step (default: bench/results/auto-front.md; --quick: ./auto-front-quick.md; \"\": none)");
     app.add_option("--scene", sceneFilter, "run only these scenes (repeatable)");
     app.add_option("--engine", engineFilter, "run only these engines, e.g. rube-solver, box2d-2.4.1 (repeatable)");
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
@@ -133,12 +133,14 @@ int main(int argc, char** argv) {
 
     const std::filesystem::path source = RUBE_SOURCE_DIR;
     if (failuresPath.empty()) failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
-    if (frontPath.empty()) frontPath = quick ? "auto-front-quick.md" : (source / "bench/results/auto-front.md").string();
+    // Defaults only for what was not asked for: an explicit "" writes no file.
+    const auto given = [&app](const char* option) { return app.count(option) > 0; };
+    if (frontPath.empty() && !given("--front-md")) frontPath = quick ? "auto-front-quick.md" : (source / "bench/results/auto-front.md").string();
     if (failuresOnly) return writeFailures(failuresPath, quick) ? 0 : 1;
     if (rates.empty()) rates = quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
     if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
-    if (chartPath.empty() && !quick) chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
-    if (scalingChartPath.empty() && !quick) scalingChartPath = (source / "screenshots/scaling.png").string();
+    if (chartPath.empty() && !quick && !given("--chart")) chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
+    if (scalingChartPath.empty() && !quick && !given("--scaling-chart")) scalingChartPath = (source / "screenshots/scaling.png").string();
 
     bench::RunOptions options;
     options.size.quick = quick;
@@ -213,7 +215,7 @@ int main(int argc, char** argv) {
 
     // Where auto stands: written whenever auto ran, so a reader sees every step it was beaten, if any.
     const std::vector<bench::AutoVerdict> verdicts = bench::judgeAuto(rows, sceneOrder);
-    if (!verdicts.empty()) {
+    if (!verdicts.empty() && !frontPath.empty()) {
         std::ofstream front = openResultFile(frontPath);
         bench::writeAutoTable(front, verdicts);
         const auto beaten = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.beatenBy.empty(); });

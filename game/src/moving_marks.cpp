@@ -66,8 +66,8 @@ void drawAirDrag(const World& world, render::DrawList& list) {
     for (const Circle& c : world.circles()) {
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double speed = c.velocity.length();
-        // The drag's deceleration |F| / m = 2r (linear |v| + quadratic |v|^2) / m (fields.hpp), in g.
-        const double inG = 2.0 * c.radius * (drag.linear * speed + drag.quadratic * speed * speed) * c.inverseMass / kStandardGravity;
+        // The drag's deceleration |F| / m = k_linear |v| + k_quadratic |v|^2 (fields.hpp), in g.
+        const double inG = (drag.linearRate(c.radius, c.inverseMass) + drag.quadraticRate(c.radius, c.inverseMass) * speed) * speed / kStandardGravity;
         const double length = std::min(kStreakPerG * inG, kStreakMax);
         if (length * 1e3 < c.radius) continue; // a ball at rest feels no air: no streak, nor a direction for one
         drawStreaks(c, length, color, list);

@@ -83,8 +83,8 @@ void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag&
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double width = 2.0 * c.radius;
         Vec2 kick;
-        if (airDrag.linear > 0.0) kick += linearDragKick(c.velocity, gravity, width * airDrag.linear * c.inverseMass, dt);
-        if (airDrag.quadratic > 0.0) kick += quadraticDragKick(c.velocity, width * airDrag.quadratic * c.inverseMass, dt);
+        if (airDrag.linear > 0.0) kick += linearDragKick(c.velocity, gravity, airDrag.linearRate(c.radius, c.inverseMass), dt);
+        if (airDrag.quadratic > 0.0) kick += quadraticDragKick(c.velocity, airDrag.quadraticRate(c.radius, c.inverseMass), dt);
         for (const Wind& wind : fields.winds)
             if (wind.on && wind.contains(c.position))
                 kick += windKick(c.velocity, wind.airVelocity(), width * wind.drag * c.inverseMass, dt);
@@ -99,7 +99,7 @@ void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag&
 void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt) {
     for (Circle& c : circles) {
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
-        const double k = 2.0 * c.radius * airDrag.linear * c.inverseMass;
+        const double k = airDrag.linearRate(c.radius, c.inverseMass);
         const Vec2 terminal = gravity / k;
         // v(dt) = v_t + (w - v_t - g dt / 2) e^{-k dt} / phi: undoes the share the move carried (see linearDragKick).
         c.velocity = terminal + (c.velocity - terminal - gravity * (0.5 * dt)) * linearDragStep(k, dt).after;

@@ -65,7 +65,7 @@ public:
         findContacts(ctx, dt);
         // Sleepers that something reached wake before anything is solved, and the contacts are found
         // again with them moving (each pass wakes at least one island, so this ends).
-        while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_, bulletPaths())) {
+        while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_, bulletPaths(dt))) {
             prepareBodies(ctx, dt);
             findContacts(ctx, dt);
         }
@@ -82,7 +82,7 @@ private:
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
     void findFriction(const StepContext& ctx);
-    std::span<const BoundingBox> bulletPaths();
+    std::span<const BoundingBox> bulletPaths(double dt);
 
     int circleCount_ = 0;
     int segmentCount_ = 0;
@@ -121,14 +121,13 @@ private:
     RigidStage rigid_;
     SleepIslands sleep_;
     std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
-    double dt_ = 0.0;
 };
 
-std::span<const BoundingBox> SolverMethod::bulletPaths() {
+std::span<const BoundingBox> SolverMethod::bulletPaths(double dt) {
     bulletPaths_.clear();
     for (const int i : bullets_) {
         const BoundingBox& box = circleBoxes_[static_cast<std::size_t>(i)];
-        const Vec2 move = bodies_[static_cast<std::size_t>(i)].velocity * dt_;
+        const Vec2 move = bodies_[static_cast<std::size_t>(i)].velocity * dt;
         bulletPaths_.push_back({{box.min.x + std::min(move.x, 0.0), box.min.y + std::min(move.y, 0.0)},
                                 {box.max.x + std::max(move.x, 0.0), box.max.y + std::max(move.y, 0.0)}});
     }
@@ -136,7 +135,6 @@ std::span<const BoundingBox> SolverMethod::bulletPaths() {
 }
 
 void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
-    dt_ = dt;
     circleCount_ = static_cast<int>(ctx.circles.size());
     segmentCount_ = static_cast<int>(ctx.segments.size());
     const std::size_t bodyCount = ctx.circles.size() + ctx.segments.size();

@@ -78,7 +78,7 @@ private:
     std::vector<std::uint8_t> onlyFixed_;  // per rigid body: every contact's other side is unmovable, all at one velocity
     std::vector<std::uint8_t> seenFrame_;  // per rigid body: frame_ holds its partners' velocity
     std::vector<Vec2> frame_;              // per rigid body: the velocity of its unmovable partners
-    std::vector<double> thickness_;        // per rigid body: half its thinnest width, m
+    std::vector<double> thickness_;        // per rigid body: half its thinnest width (what a line must be inside it by before its centre crosses), m
     Vec2 gravity_;
     double stepTime_ = 0.0; // dt, s
     int substeps_ = 1;

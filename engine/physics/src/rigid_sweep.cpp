@@ -30,18 +30,8 @@ double coreExtent(const RoundedPolygon& p, Vec2 centre) {
     return e;
 }
 
-/// Half the thinnest width of a body: what a line must be inside it by before its centre crosses.
-double halfThickness(const RigidBody& b) {
-    return b.shape == BodyShape::box ? std::min(b.halfExtents.x, b.halfExtents.y) : b.halfExtents.y;
-}
-
-struct SweepBox {
-    Vec2 min, max;
-    bool overlaps(const SweepBox& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
-};
-
 /// Everywhere the shape can be over the step: its centre's path grown by its extent and radius.
-SweepBox sweptBounds(const SweptShape& s) {
+RigidStage::Box sweptBounds(const SweptShape& s) {
     const Vec2 end = s.centre + s.move;
     const double r = s.extent + s.start.radius;
     return {{std::min(s.centre.x, end.x) - r, std::min(s.centre.y, end.y) - r},
@@ -112,7 +102,7 @@ int RigidStage::sweep(StepContext& ctx, double dt) {
         if (s.inverseMass == 0.0) continue;
         // A body that moved and turned less than its half thickness cannot have passed a line: the
         // step's speculative contacts were enough.
-        const double thick = halfThickness(body);
+        const double thick = thickness_[i];
         SweptShape shape;
         shape.centre = startPosition_[i];
         shape.start = makeRoundedPolygon(body, startPosition_[i], startAngle_[i]);
@@ -120,7 +110,7 @@ int RigidStage::sweep(StepContext& ctx, double dt) {
         shape.turn = s.turn;
         shape.extent = coreExtent(shape.start, shape.centre);
         if (shape.move.length() + std::abs(shape.turn) * shape.extent <= thick) continue;
-        const SweepBox bounds = sweptBounds(shape);
+        const Box bounds = sweptBounds(shape);
         const RoundedPolygon end = makeRoundedPolygon(body, body.position, body.angle);
         double first = 2.0;
         int hit = -1;
@@ -173,12 +163,9 @@ bool RigidStage::resolveSweptHit(StepContext& ctx, std::size_t i, int segment, c
         m.count = 1;
     }
     const Vec2 n = -m.normal; // from the segment towards the body
-    // The segment's surface velocity where it is met: v + omega x r about its pivot, at the time of impact.
-    const Vec2 pivot = swept.centre + swept.move;
-    const auto surface = [&](Vec2 p) {
-        const Vec2 v = seg.motion() == Motion::kinematic ? seg.velocity : Vec2{};
-        return seg.motion() == Motion::kinematic && seg.angularVelocity != 0.0 ? v + (p - pivot).perpendicular() * seg.angularVelocity : v;
-    };
+    // The segment's surface velocity where it is met: v + omega x r about its pivot where the body
+    // was put, at the step's end (the segment itself is still where the step began: p - move there).
+    const auto surface = [&](Vec2 p) { return seg.velocityAt(p - swept.move); };
     const double bounciness = body.material.bounciness * seg.material.bounciness;
     const double invM = body.inverseMass, invI = body.inverseInertia;
     double approach = 0.0;

@@ -188,7 +188,9 @@ void World::step() {
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
     context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && method_->keepsSleep();
-    if (!context.sleep) wakeAll(circles_);
+    // Only the solver puts circles to sleep, so a world that never let it pays no pass to wake them.
+    if (!context.sleep && mayHaveSleepers_) wakeAll(circles_);
+    mayHaveSleepers_ = context.sleep;
     // Model no more than a scene needs: a world without ropes never enters either rope pass.
     const bool hasRopes = !ropes_.empty();
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);

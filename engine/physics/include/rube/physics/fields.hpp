@@ -25,6 +25,10 @@ struct AirDrag {
     double quadratic = 0.0; ///< N s^2/m^2 per metre of width: pressure drag (1/2 rho C_d; about 0.28 for a ball in air)
     /// True when either coefficient is set.
     bool active() const { return linear > 0.0 || quadratic > 0.0; }
+    /// k of a ball of `radius` and 1/m `inverseMass` in dv/dt = -k v: 2r linear / m, 1/s.
+    double linearRate(double radius, double inverseMass) const { return 2.0 * radius * linear * inverseMass; }
+    /// k of the same ball in dv/dt = -k |v| v: 2r quadratic / m, 1/m.
+    double quadraticRate(double radius, double inverseMass) const { return 2.0 * radius * quadratic * inverseMass; }
 };
 
 /// A fan: a column of air blowing from `origin` along `direction`, `length` long and `width` wide.

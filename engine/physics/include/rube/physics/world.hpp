@@ -155,6 +155,7 @@ private:
     std::unique_ptr<StepMethod> method_;
     StepStats stats_;
     double time_ = 0.0;
+    bool mayHaveSleepers_ = false; ///< some step let islands sleep since every circle was last woken
 };
 
 /// True when `method` moves bodies that turn (rotating boxes, capsules, pivots): the solver and auto.

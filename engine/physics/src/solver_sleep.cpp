@@ -17,14 +17,9 @@ bool movingKinematic(const Segment& s) {
 
 } // namespace
 
-int wakeAll(std::span<Circle> circles) {
-    int woken = 0;
-    for (Circle& c : circles) {
-        if (!c.sleep.asleep) continue;
-        wake(c);
-        ++woken;
-    }
-    return woken;
+void wakeAll(std::span<Circle> circles) {
+    for (Circle& c : circles)
+        if (c.sleep.asleep) wake(c);
 }
 
 bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segment> segments,
@@ -35,11 +30,10 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
     for (int i = 0; i < circleCount; ++i)
         if (circles[static_cast<std::size_t>(i)].sleep.asleep) asleep_.push_back(i);
     if (asleep_.empty()) return false;
-    woke_ = false;
-    const auto reach = [&](int i) {
-        Circle& c = circles[static_cast<std::size_t>(i)];
-        if (c.sleep.asleep) wakeIsland(circles, c.sleep.island);
-    };
+    // Reached islands are marked first and woken in one pass at the end, so waking many islands
+    // costs one pass over the sleepers, not one per island.
+    islandReached_.assign(static_cast<std::size_t>(circleCount), 0);
+    const auto reach = [&](int i) { islandReached_[static_cast<std::size_t>(circles[static_cast<std::size_t>(i)].sleep.island)] = 1; };
     // Pushed from outside: a sleeper's velocity and spin are exactly zero until something sets them.
     for (const int i : asleep_) {
         const Circle& c = circles[static_cast<std::size_t>(i)];
@@ -65,15 +59,14 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
         if (movingKinematic(segments[s])) reachBox(segmentBoxes[s]);
     for (int i = 0; i < circleCount; ++i)
         if (movingKinematic(circles[static_cast<std::size_t>(i)])) reachBox(circleBoxes[static_cast<std::size_t>(i)]);
-    return woke_;
-}
-
-void SleepIslands::wakeIsland(std::span<Circle> circles, int island) {
-    woke_ = true;
+    bool woke = false;
     for (const int i : asleep_) {
         Circle& c = circles[static_cast<std::size_t>(i)];
-        if (c.sleep.asleep && c.sleep.island == island) wake(c);
+        if (!islandReached_[static_cast<std::size_t>(c.sleep.island)]) continue;
+        wake(c);
+        woke = true;
     }
+    return woke;
 }
 
 int SleepIslands::find(int i) {

@@ -20,8 +20,8 @@
 
 namespace rube {
 
-/// Wakes every asleep circle (a method that does not keep sleep is about to move them). Returns how many.
-int wakeAll(std::span<Circle> circles);
+/// Wakes every asleep circle (a method that does not keep sleep is about to move them).
+void wakeAll(std::span<Circle> circles);
 
 /// The circles a step looks at to wake and put islands to sleep.
 class SleepIslands {
@@ -43,13 +43,12 @@ public:
 
 private:
     int find(int i);
-    void wakeIsland(std::span<Circle> circles, int island);
 
     std::vector<int> parent_;            // union-find over the circles ready to sleep
     std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
     std::vector<std::uint8_t> blocked_;  // per circle, then per root: touches an awake circle or a moving kinematic body
     std::vector<int> asleep_;                 // scratch: the sleepers this step
-    bool woke_ = false;
+    std::vector<std::uint8_t> islandReached_; // scratch: per island (a circle index), something reached it this step
 };
 
 } // namespace rube

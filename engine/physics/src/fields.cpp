@@ -16,19 +16,17 @@ namespace {
 // phi = (1 - a) / (k dt), so the move lands exactly on x(dt); after it (linearDragAfterMove) the
 // velocity w = u + g dt is mapped onto v(dt). Both position and velocity are then exact at every step,
 // and the terminal speed is g / k to round-off. (1 - a) is -expm1(-k dt), exact for small k dt.
-struct LinearDragStep {
-    double phi;   // (1 - e^{-k dt}) / (k dt): the share of v - v_t the move carries
-    double after; // e^{-k dt} / phi: how the velocity after the move is scaled onto v(dt)
-};
+//
+// phi = (1 - e^{-k dt}) / (k dt): the share of v - v_t the move carries.
+double linearDragShare(double k, double dt) { return -std::expm1(-k * dt) / (k * dt); }
 
-LinearDragStep linearDragStep(double k, double dt) {
-    const double phi = -std::expm1(-k * dt) / (k * dt);
-    return {phi, std::exp(-k * dt) / phi};
-}
+// e^{-k dt} / phi: how the velocity after the move is scaled onto v(dt). Only the second half of the
+// step needs e^{-k dt} itself, so the first half computes no exponential it would throw away.
+double linearDragAfterScale(double k, double dt) { return std::exp(-k * dt) / linearDragShare(k, dt); }
 
 Vec2 linearDragKick(Vec2 v, Vec2 gravity, double k, double dt) {
     const Vec2 terminal = gravity / k;
-    const double phi = linearDragStep(k, dt).phi;
+    const double phi = linearDragShare(k, dt);
     return terminal + (v - terminal) * phi - gravity * (0.5 * dt) - v;
 }
 
@@ -102,7 +100,7 @@ void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2
         const double k = airDrag.linearRate(c.radius, c.inverseMass);
         const Vec2 terminal = gravity / k;
         // v(dt) = v_t + (w - v_t - g dt / 2) e^{-k dt} / phi: undoes the share the move carried (see linearDragKick).
-        c.velocity = terminal + (c.velocity - terminal - gravity * (0.5 * dt)) * linearDragStep(k, dt).after;
+        c.velocity = terminal + (c.velocity - terminal - gravity * (0.5 * dt)) * linearDragAfterScale(k, dt);
     }
 }
 

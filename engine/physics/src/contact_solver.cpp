@@ -78,11 +78,18 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         const double vn = c.normal.dot(a.velocity - b.velocity);
         // Speculative (s > 0): closing by at most the gap this substep is allowed, vn >= -s / h, rigidly.
         // Overlapping: a soft push-out at the spring's bias rate, capped at maxPushSpeed.
-        const Softness& soft = softness[invMassB == 0.0 ? 1 : 0];
-        const bool speculative = s > 0.0;
-        const double bias = speculative ? s * invH : std::max(soft.biasRate * s, -maxPushSpeed);
-        const double massScale = speculative ? 1.0 : soft.massScale;
-        const double impulseScale = speculative ? 0.0 : soft.impulseScale;
+        // A branch on the gap, not a select (see relaxSweep): most contacts keep their side of it.
+        double bias, massScale, impulseScale;
+        if (s > 0.0) {
+            bias = s * invH;
+            massScale = 1.0;
+            impulseScale = 0.0;
+        } else {
+            const Softness& soft = softness[invMassB == 0.0 ? 1 : 0];
+            bias = std::max(soft.biasRate * s, -maxPushSpeed);
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+        }
         // Sequential impulses with an accumulated, clamped impulse: lambda_total >= 0 (no pulling).
         const double delta = -c.normalMass * massScale * (vn + bias) - impulseScale * c.impulse;
         const double total = std::max(c.impulse + delta, 0.0);
@@ -135,7 +142,13 @@ void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         }
         const double vn = c.normal.dot(a.velocity - b.velocity);
         // Rigid, no push-out: vn >= 0 when touching, vn >= -s / h when still apart.
-        const double delta = -c.normalMass * (vn + std::max(s, 0.0) * invH);
+        // max(s, 0) / h, written as a branch: as a select (what std::max compiles to here) every
+        // impulse waits for its gap, which the first pass computes from both bodies' displacements;
+        // predicted, the sweep runs ahead on the velocities alone. The same value for every s (-0 and
+        // NaN included); one step's relax pass replayed: 7.0 -> 4.8 ns a contact (20,000-ball pile).
+        double bias;
+        if (s < 0.0) bias = 0.0; else bias = s * invH;
+        const double delta = -c.normalMass * (vn + bias);
         const double total = std::max(c.impulse + delta, 0.0);
         const double previous = c.impulse;
         const Vec2 p = c.normal * (total - previous);

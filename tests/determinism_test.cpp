@@ -30,7 +30,7 @@ constexpr Expected kExpected[] = {
     {"bounce", "", 240, 0x65d6f2a6cd701f55ull},
     {"bullet", "", 6, 0x6c99b03990abdb2eull},
     {"newtons-cradle", "", 240, 0x72c92839e3dd0ceaull},
-    {"pile", "", 120, 0x91569f15f4a6b5fdull},
+    {"pile", "", 120, 0x8fbe231ad1c32e9eull},
     {"pool-break", "", 240, 0x14ecb34ce1b5401dull},
     {"projectile", "", 108, 0xee9cab20ebced738ull},
     {"slope-rest", "", 180, 0x69110147ab9d67b0ull},

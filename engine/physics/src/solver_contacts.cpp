@@ -138,7 +138,13 @@ void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<Contact
         scratch.rank[k] = scratch.perCircle[contacts[k].a]++;
         rankCount = std::max(rankCount, scratch.rank[k] + 1);
     }
-    // Key: (infinite mass last, layer from the top, rank), then a stable counting sort by key.
+    // Key: (infinite mass last, layer from the top, rank, pushing first), then a stable counting sort.
+    // Pushing first: whether a contact pushes decides the sweeps' branches (gap closed or not, impulse
+    // clamped at zero or not, friction to solve or not). Mixed, about a third of consecutive contacts
+    // differ; the CPU learns such a pattern by heart for a 1000-ball pile's 2850 contacts but not for
+    // a 20,000-ball pile's 57,000, and mispredicts. Grouped, the relax pass costs 3.3 ns a contact at
+    // either size (it was 5.1 at 20,000 balls). The warm-start impulse is the best guess of this
+    // step's: it is last step's final one.
     scratch.key.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const ContactConstraint& c = contacts[k];
@@ -146,9 +152,10 @@ void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<Contact
         const double height = dynamicPair ? 0.5 * (positions[c.a].dot(up) + positions[c.b].dot(up)) : positions[c.a].dot(up);
         const int layer = std::clamp(static_cast<int>((height - lo) * perLayer), 0, layerCount - 1);
         const int fromTop = layerCount - 1 - layer + (dynamicPair ? 0 : layerCount);
-        scratch.key[k] = fromTop * rankCount + scratch.rank[k];
+        const int notPushing = c.impulse > 0.0 ? 0 : 1;
+        scratch.key[k] = (fromTop * rankCount + scratch.rank[k]) * 2 + notPushing;
     }
-    const int keyCount = 2 * layerCount * rankCount;
+    const int keyCount = 4 * layerCount * rankCount;
     scratch.start.assign(static_cast<std::size_t>(keyCount) + 1, 0);
     for (std::size_t k = 0; k < n; ++k) ++scratch.start[scratch.key[k] + 1];
     for (int r = 0; r < keyCount; ++r) scratch.start[r + 1] += scratch.start[r];

@@ -186,7 +186,7 @@ TEST_CASE("a domino falls back below its critical angle atan(w / h) and tips ove
     }
 }
 
-TEST_CASE("a seesaw with equal moments m1 d1 = m2 d2 stays balanced; unequal ones tip", "[rigid]") {
+TEST_CASE("a seesaw with equal moments m1 d1 = m2 d2 stays balanced, unequal ones tip", "[rigid]") {
     const auto seesaw = [](double d2) {
         World world = solverWorld();
         const Vec2 pivot{0.0, 1.0};
@@ -305,7 +305,7 @@ TEST_CASE("a ball rolls down a tilted fixed plank at (2/3) g sin theta", "[rigid
     CHECK(-c.angularVelocity * c.radius == Approx(c.velocity.dot(down)).epsilon(0.01)); // rolling, not sliding
 }
 
-TEST_CASE("methods that do not model turning bodies refuse them; fixed-rotation boxes pass", "[rigid]") {
+TEST_CASE("methods that do not model turning bodies refuse them, fixed-rotation boxes pass", "[rigid]") {
     for (const Method method : {Method::discrete, Method::turnBased, Method::exact}) {
         WorldDef def;
         def.method = method;

@@ -82,7 +82,7 @@ TEST_CASE("a box dropped on the floor is one impact at sqrt(2 g h), reported as 
     CHECK(world.stats().restingContacts > 100);
 }
 
-TEST_CASE("a box striking a fixed ball is the box's impact; a ball striking a box is the ball's", "[rigid][impact]") {
+TEST_CASE("a box striking a fixed ball is the box's impact, a ball striking a box is the ball's", "[rigid][impact]") {
     {
         World world = solverWorld();
         addFloor(world);
@@ -148,7 +148,7 @@ TEST_CASE("a box dropped on a resting box: one impact between the two bodies, no
     CHECK(world.stats().impacts == 1);
 }
 
-TEST_CASE("a rigid body leaving the bounds is one escape; a NaN in its state is flagged", "[rigid][invariants]") {
+TEST_CASE("a rigid body leaving the bounds is one escape, a NaN in its state is flagged", "[rigid][invariants]") {
     WorldDef def;
     def.method = Method::solver;
     def.bounds = {{-5.0, -5.0}, {5.0, 5.0}};

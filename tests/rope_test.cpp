@@ -173,7 +173,7 @@ TEST_CASE("rope: a cut rope acts exactly as no rope at all", "[rope]") {
     }
 }
 
-TEST_CASE("rope: a slack rope never pushes; it jerks taut and then holds the ball at L", "[rope]") {
+TEST_CASE("rope: a slack rope never pushes, it jerks taut and then holds the ball at L", "[rope]") {
     for (const Method method : kMethods) {
         CAPTURE(methodName(method));
         World world = openWorld(method), free = openWorld(method);

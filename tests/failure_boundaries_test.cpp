@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <utility>
 
 using bench::failures::Outcome;
 using rube::Method;
@@ -88,4 +89,51 @@ TEST_CASE("failures: a probe reports what it sees: a discrete stack ends its ste
     CHECK(out.overlaps);
     CHECK(out.deepestOverlap > bench::failures::kOverlapTolerance);
     CHECK_FALSE(bench::failures::stackProbe(Method::discrete, 1).failed()); // one ball on a line holds
+}
+
+TEST_CASE("failures: a discrete stack sinks through a static floor from a height that grows with the step rate",
+          "[failures][discrete][floor]") {
+    // Lecture 5's first method pushes each overlap apart once: the pushes of the balls above add up
+    // on the bottom ball, and from some height they drive it past the floor's line. Measured boundary
+    // (r = 0.2 m, 5 s): 6 balls at 30 Hz, 8 at 60, 11 at 120, 17 at 240; one ball fewer always holds.
+    const std::pair<double, int> boundaries[] = {{30.0, 6}, {60.0, 8}, {120.0, 11}, {240.0, 17}};
+    for (const auto& [hz, height] : boundaries) {
+        INFO(hz << " Hz, " << height << " balls");
+        CHECK(bench::failures::floorStackProbe(Method::discrete, height, 1.0 / hz).sinks);
+        CHECK_FALSE(bench::failures::floorStackProbe(Method::discrete, height - 1, 1.0 / hz).sinks);
+    }
+    // Far below the tunnelling speed: a column of 10 sinks while its bottom ball moves well under 2r / dt.
+    CHECK(bench::failures::floorStackProbe(Method::discrete, 10).sinks);
+    // Continuous detection and resting contact hold the same columns.
+    for (const Method method : {Method::turnBased, Method::exact})
+        CHECK_FALSE(bench::failures::floorStackProbe(method, 32).sinks);
+}
+
+TEST_CASE("failures: turn-based and exact slide on every incline and come to rest in every V", "[failures][incline]") {
+    for (const Method method : {Method::turnBased, Method::exact}) {
+        for (const double degrees : {0.01, 0.05, 0.12, 1.0, 30.0, 60.0}) {
+            INFO(rube::methodName(method) << ", incline " << degrees);
+            CHECK_FALSE(bench::failures::inclineProbe(method, degrees).failed());
+        }
+    }
+    for (const double halfAngle : {5.0, 30.0, 60.0, 80.0}) {
+        INFO("V half-angle " << halfAngle);
+        CHECK_FALSE(bench::failures::vProbe(Method::exact, halfAngle).failed());
+        CHECK_FALSE(bench::failures::vProbe(Method::turnBased, halfAngle).failed());
+    }
+    // The discrete method's push-outs leave a ball in a V short of rest.
+    CHECK(bench::failures::vProbe(Method::discrete, 30.0).sinks);
+}
+
+TEST_CASE("failures: a bounce off a line cap leaves along the exact reflection under exact and turn-based",
+          "[failures][impact]") {
+    for (const double speed : {0.1, 1.0, 10.0, 100.0}) {
+        INFO("impact speed " << speed << " m/s");
+        for (const Method method : {Method::exact, Method::turnBased}) {
+            const Outcome out = bench::failures::capBounceProbe(method, speed);
+            CHECK(out.directionError < 1e-5);
+        }
+    }
+    // Discrete reflects about the normal where the step ends, not where they met: off by degrees at 2 m/s.
+    CHECK(bench::failures::capBounceProbe(Method::discrete, 2.0).directionError > 0.5);
 }

@@ -117,6 +117,7 @@ std::string Outcome::describe() const {
     add(eventCap, "event cap");
     add(overlaps, "overlap > 5 % r");
     add(gainsEnergy, "gains energy");
+    add(misdirected, "bounce off > 0.5 deg");
     return s;
 }
 
@@ -161,6 +162,93 @@ Outcome bouncinessProbe(Method method, double bounciness) {
     addFloor(world);
     for (int i = 0; i < 4; ++i) addBall(world, {0.0, kRadius + gap + (2.0 * kRadius + gap) * i}, {}, kRadius, 1.0, bounciness);
     return watch(world, static_cast<int>(std::lround(3.0 / kTimeStep)), columnBroken, false);
+}
+
+Outcome floorStackProbe(Method method, int height, double timeStep) {
+    constexpr double r = 0.2;
+    World world = makeWorld(method, kGravity, timeStep);
+    addFloor(world);
+    for (int i = 0; i < height; ++i) addBall(world, {0.0, r + 2.0 * r * i}, {}, r, 1.0, 0.0);
+    Outcome out;
+    for (int step = 0; step < static_cast<int>(std::lround(5.0 / timeStep)) && !out.sinks; ++step) {
+        world.step();
+        out.sinks = !(world.circles()[0].position.y >= 0.0); // NaN counts as through
+    }
+    return out;
+}
+
+Outcome inclineProbe(Method method, double degrees) {
+    constexpr double r = 0.25;
+    const double theta = degrees * std::acos(-1.0) / 180.0;
+    World world = makeWorld(method, kGravity);
+    const Vec2 down{std::cos(theta), -std::sin(theta)};
+    const Vec2 normal{std::sin(theta), std::cos(theta)};
+    rube::SegmentDef line;
+    line.a = down * -600.0;
+    line.b = down * 600.0;
+    world.addSegment(line);
+    const Vec2 start = down * -300.0 + normal * r;
+    addBall(world, start, {}, r, 1.0, 0.0);
+    const auto e = [&] { const Circle& c = world.circles()[0]; return kGravity * c.position.y + 0.5 * c.velocity.lengthSquared(); };
+    const double e0 = e();
+    Outcome out;
+    const int steps = static_cast<int>(std::lround(10.0 / kTimeStep));
+    for (int step = 0; step < steps; ++step) {
+        world.step();
+        out.energyGain = std::max(out.energyGain, (e() - e0) / std::abs(e0));
+    }
+    out.gainsEnergy = out.energyGain > 1e-9;
+    const double t = world.time();
+    const double slid = (world.circles()[0].position - start).dot(down);
+    out.sinks = !(std::abs(slid / (0.5 * kGravity * std::sin(theta) * t * t) - 1.0) <= 0.01); // froze, or slid wrong
+    return out;
+}
+
+Outcome vProbe(Method method, double halfAngleDegrees) {
+    constexpr double r = 0.25, length = 5.0, bounciness = 0.3;
+    const double a = halfAngleDegrees * std::acos(-1.0) / 180.0;
+    World world = makeWorld(method, kGravity);
+    for (const double side : {-1.0, 1.0}) {
+        rube::SegmentDef line;
+        line.b = {side * length * std::sin(a), length * std::cos(a)};
+        line.material = {bounciness, 0.0};
+        world.addSegment(line);
+    }
+    const double rest = r / std::sin(a), y = rest + 0.1;
+    addBall(world, {0.1 * (y * std::sin(a) - r) / std::cos(a), y}, {}, r, 1.0, bounciness);
+    for (int step = 0; step < static_cast<int>(std::lround(5.0 / kTimeStep)); ++step) world.step();
+    const Circle& c = world.circles()[0];
+    const double across = c.position.x * std::cos(a), up = c.position.y * std::sin(a);
+    Outcome out;
+    out.eventCap = world.stats().capsHit > 0;
+    out.sinks = !(std::abs(std::abs(up + across) - r) < 1e-9 && std::abs(std::abs(up - across) - r) < 1e-9 &&
+                  c.velocity.length() < 1e-9);
+    return out;
+}
+
+Outcome capBounceProbe(Method method, double speed) {
+    constexpr double r = 0.25;
+    World world = makeWorld(method, 0.0);
+    rube::SegmentDef line; // a thin line from (-5, 0) to the origin: its cap at the origin is struck
+    line.a = {-5.0, 0.0};
+    line.b = {0.0, 0.0};
+    line.material = {1.0, 0.0};
+    world.addSegment(line);
+    // Coming from the right along -x with an impact parameter of r / 2 above the cap, 3.5 steps out.
+    const Vec2 start{std::sqrt(0.75) * r + speed * kTimeStep * 3.5, 0.5 * r};
+    addBall(world, start, {-speed, 0.0}, r, 1.0, 1.0);
+    // The exact reflection: at impact the centre is at (sqrt(r^2 - (r/2)^2), r/2) from the cap, the
+    // normal n from the cap to it, v' = v - 2 (v . n) n (C = 1, lecture 3).
+    const Vec2 n = Vec2{std::sqrt(r * r - 0.25 * r * r), 0.5 * r}.normalized();
+    const Vec2 v{-speed, 0.0};
+    const Vec2 exact = v - n * (2.0 * v.dot(n));
+    Outcome out;
+    for (int step = 0; step < 8; ++step) world.step();
+    const Vec2 after = world.circles()[0].velocity;
+    const double cosine = std::clamp(after.dot(exact) / (after.length() * exact.length()), -1.0, 1.0);
+    out.directionError = std::acos(cosine) * 180.0 / std::acos(-1.0);
+    out.misdirected = !(out.directionError <= 0.5);
+    return out;
 }
 
 } // namespace bench::failures

@@ -19,9 +19,11 @@ struct Outcome {
     bool nonFinite = false;   ///< a NaN or infinity appeared
     double deepestOverlap = 0.0; ///< the largest overlap seen, as a fraction of the radius
     double energyGain = 0.0;     ///< the largest rise of the energy over its start, relative
+    bool misdirected = false;    ///< a bounce left more than 0.5 degrees off the exact reflection
+    double directionError = -1.0; ///< that bounce's direction error, degrees (capBounceProbe; -1: not measured)
 
     /// True when anything above went wrong.
-    bool failed() const { return tunnels || sinks || overlaps || gainsEnergy || eventCap || nonFinite; }
+    bool failed() const { return tunnels || sinks || overlaps || gainsEnergy || eventCap || nonFinite || misdirected; }
     /// The failures, worst first, joined by ", " ("" when none).
     std::string describe() const;
 };
@@ -48,5 +50,24 @@ Outcome massRatioProbe(rube::Method method, double ratio);
 /// A column of 4 balls (r = 0.1 m) dropped with 0.1 m gaps onto a floor, all of bounciness C, under
 /// gravity for 3 s: the energy may only fall.
 Outcome bouncinessProbe(rube::Method method, double bounciness);
+
+/// A column of `height` balls (r = 0.2 m, 1 kg, C = 0) standing on a static floor for 5 s at
+/// `timeStep`: only whether the bottom ball ends a step below the floor (sinks) counts.
+Outcome floorStackProbe(rube::Method method, int height, double timeStep = kTimeStep);
+
+/// A frictionless ball (r = 0.25 m) at rest on a static line tilted `degrees`, 10 s: it fails
+/// (sinks, as "freezes") unless it slides x = g sin(theta) t^2 / 2 within 1 % at the end, or when
+/// its energy rises.
+Outcome inclineProbe(rube::Method method, double degrees);
+
+/// A ball (r = 0.25 m, C = 0.3) dropped 0.1 m above its resting height, a tenth of the way off the
+/// axis, into a V of two static lines each `halfAngleDegrees` from the V's axis, 5 s: it fails
+/// (sinks, as "cycles") unless it ends touching both lines within 1e-9 m, slower than 1e-9 m/s.
+Outcome vProbe(rube::Method method, double halfAngleDegrees);
+
+/// A ball (r = 0.25 m, C = 1, no gravity) striking a line's rounded cap (radius 0) at `speed` m/s with
+/// an impact parameter of half its radius: the error of its outgoing direction against the exact
+/// reflection about the normal at the time of impact, degrees, in Outcome::directionError; fails above 0.5.
+Outcome capBounceProbe(rube::Method method, double speed);
 
 } // namespace bench::failures

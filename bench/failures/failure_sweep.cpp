@@ -18,6 +18,10 @@ constexpr int kStackForTimeStep = 16;
 Outcome stepRate(rube::Method m, double hz, bool) { return stackProbe(m, kStackForTimeStep, 1.0 / hz); }
 Outcome mass(rube::Method m, double v, bool) { return massRatioProbe(m, v); }
 Outcome bounce(rube::Method m, double v, bool) { return bouncinessProbe(m, v); }
+Outcome incline(rube::Method m, double v, bool) { return inclineProbe(m, v); }
+Outcome vee(rube::Method m, double v, bool) { return vProbe(m, v); }
+Outcome impact(rube::Method m, double v, bool) { return capBounceProbe(m, v); }
+Outcome floorStack(rube::Method m, double v, bool) { return floorStackProbe(m, static_cast<int>(v)); }
 
 std::string number(double v) {
     char buffer[32];
@@ -49,6 +53,14 @@ std::vector<Axis> failureAxes() {
          {1, 3, 10, 30, 100, 1000, 1e4, 1e5, 1e6}, mass},
         {"bounciness C", "4 balls (r = 0.1 m) dropped in a column with 0.1 m gaps onto a floor, 3 s",
          {0, 0.25, 0.5, 0.75, 0.9, 0.95, 1}, bounce},
+        {"incline, degrees", "a frictionless ball (r = 0.25 m) at rest on a tilted line, 10 s: *sinks* here means it froze or "
+         "slid off x = g sin(theta) t^2 / 2 by more than 1 %", {0.01, 0.05, 0.12, 0.5, 1, 5, 15, 30, 45, 60}, incline},
+        {"V half-angle, degrees", "a ball (r = 0.25 m, C = 0.3) dropped 0.1 m into a V of two lines, 5 s: *sinks* here means it "
+         "did not come to rest touching both (1e-9 m, 1e-9 m/s)", {5, 10, 15, 20, 30, 45, 60, 70, 75, 80}, vee},
+        {"impact speed, m/s", "a ball (r = 0.25 m, C = 1, no gravity) striking a line's cap at half its radius off centre: "
+         "fails when it leaves more than 0.5 degrees off the exact reflection", {0.1, 0.5, 1, 2, 5, 10, 20, 50, 100}, impact},
+        {"stack on a floor", "a column of touching balls (r = 0.2 m, C = 0) on a floor, 5 s: only the bottom ball crossing "
+         "the floor counts", {1, 2, 4, 6, 8, 10, 12, 16, 24, 32}, floorStack},
     };
 }
 
@@ -104,7 +116,10 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
             out << "| " << rube::methodName(sweep.methods[m]) << " |";
             for (const auto& [value, outcome] : sweep.cells[m][a].tried) {
                 char detail[64];
-                std::snprintf(detail, sizeof detail, " (%.2g, %.2g)", outcome.deepestOverlap, outcome.energyGain);
+                if (outcome.directionError >= 0.0)
+                    std::snprintf(detail, sizeof detail, " (%.2g deg)", outcome.directionError);
+                else
+                    std::snprintf(detail, sizeof detail, " (%.2g, %.2g)", outcome.deepestOverlap, outcome.energyGain);
                 out << ' ' << (outcome.failed() ? outcome.describe() : "ok") << detail << " |";
             }
             out << '\n';

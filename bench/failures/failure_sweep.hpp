@@ -33,7 +33,8 @@ struct Sweep {
     std::vector<std::vector<Cell>> cells;
 };
 
-/// The four axes (speed, stack height, mass ratio, bounciness); --quick tries fewer speed phases.
+/// The axes (speed, stack height, step rate, mass ratio, bounciness, incline, V half-angle, impact
+/// speed, stack on a floor); --quick tries fewer speed phases.
 std::vector<Axis> failureAxes();
 
 /// Runs every axis on every method; `quick` checks the sweep runs, with fewer phases per speed.

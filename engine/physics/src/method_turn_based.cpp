@@ -1,6 +1,8 @@
 // The turn-based method (lecture 3): velocities take gravity first, then each dynamic body in index
 // order moves over the step or until its first impact against the others where they are now, and
 // that impact is resolved at once. Efficient and overlap-free, but positions are slightly off: order matters.
+// Resting contact on something that holds still (an approach below restingSpeed, C = 0) does not end
+// the turn: the body slides on along the surface for the rest of it, as on an incline it must.
 #include "block_pairs.hpp"
 #include "kinematic_pose.hpp"
 #include "resolve.hpp"
@@ -9,9 +11,15 @@
 #include "rube/physics/time_of_impact.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rube {
 namespace {
+
+// Pieces one turn may take (each ends at an impact on a still surface) before it ends where it is.
+constexpr int kPiecesPerTurn = 8;
+// Two surfaces wedge a circle when their normals are not parallel (|n1 x n2| above round-off).
+constexpr double kParallelSine = 1e-9;
 
 // The earliest impact of one body's turn, and what it hit.
 struct TurnImpact {
@@ -54,10 +62,44 @@ public:
 private:
     // Moves circle i over dt or to its first impact; returns whether it resolved one.
     static bool takeTurn(StepContext& ctx, int i, double dt) {
+        double elapsed = 0.0;
+        bool impacted = false;
+        TurnImpact last; // the still surface the previous piece of the turn ended on (other < 0: none)
+        for (int piece = 0; piece < kPiecesPerTurn; ++piece) {
+            // A still surface (a static line, a fixed body) is where it is for the whole turn, so an
+            // impact on it need not end the turn: the circle goes on with its new velocity for the rest
+            // of the step (sliding along it after a resting impact), and its position stays the one
+            // integration of its velocity. Against a body that moves in its own turn, the turn ends (lecture 3).
+            const TurnEnd end = moveUntilImpact(ctx, i, dt - elapsed, ctx.time + elapsed, last);
+            impacted = impacted || end.impact;
+            if (!end.goesOn) break;
+            elapsed += end.time;
+        }
+        return impacted;
+    }
+
+    // How a piece of a turn ended: at `time`, at a real impact or not, and whether the turn goes on.
+    struct TurnEnd {
+        bool impact = false;
+        bool goesOn = false;
+        double time = 0.0;
+    };
+
+    // True when `a` and `b` name the same body (a segment's face and cap are one body).
+    static bool sameOther(const TurnImpact& a, Other kind, int other) {
+        const auto body = [](Other k) { return k == Other::segmentCap ? Other::segment : k; };
+        return a.other == other && body(a.kind) == body(kind);
+    }
+
+    // Moves circle i over dt or to its first impact and resolves it. `rested` (the surface the turn
+    // just slid from) is not searched: it is convex and holds still, so a velocity along it cannot
+    // meet it again, and round-off would otherwise find it at t = 0 for ever.
+    static TurnEnd moveUntilImpact(StepContext& ctx, int i, double dt, double now, TurnImpact& rested) {
         Circle& c = ctx.circles[i];
         std::optional<TurnImpact> first;
         const auto consider = [&](const std::optional<Collision>& hit, TurnImpact impact) {
             if (!hit || (first && first->collision.timeOfImpact <= hit->timeOfImpact)) return;
+            if (rested.other >= 0 && sameOther(rested, impact.kind, impact.other)) return;
             impact.collision = *hit;
             first = impact;
         };
@@ -98,7 +140,7 @@ private:
         }
         if (!first) {
             c.position += c.velocity * dt;
-            return false;
+            return {false, false, dt};
         }
         const Collision& hit = first->collision;
         const double t = hit.timeOfImpact;
@@ -106,9 +148,12 @@ private:
         const Vec2 carried = first->scripted ? first->otherVelocity * t : Vec2{};
         c.position = hit.pointOfImpact + carried;
         // Newton with the other's velocity, only if approaching (lecture 3 tip: the relative velocity decides).
+        // An approach slower than restingSpeed (what gravity gives within a step) is resting contact,
+        // resolved with C = 0 as the exact method does: a resting ball with C = 1 would hop g dt every step.
         Vec2 otherVelocity = first->otherVelocity;
+        const bool resting = approachSpeed(c.velocity, otherVelocity, hit.normal) < ctx.restingSpeed;
         const double approach = resolveImpact(c.velocity, c.inverseMass, otherVelocity, first->otherInverseMass,
-                                              hit.normal, first->bounciness);
+                                              hit.normal, resting ? 0.0 : first->bounciness);
         if (first->kind == Other::circle && ctx.circles[first->other].motion == Motion::dynamic)
             ctx.circles[first->other].velocity = otherVelocity;
         if (first->kind == Other::body && ctx.bodies[first->other].motion == Motion::dynamic)
@@ -117,11 +162,30 @@ private:
         // on with its new velocity for the rest of the step: it would lag a step behind otherwise,
         // and a ball on a rising platform would sink through it.
         if (first->scripted) c.position += c.velocity * (dt - t);
-        if (!(approach > 0.0)) return false;
-        ctx.impacts.push_back(Impact{i, first->kind, first->other, ctx.time + t, hit.contactPoint + carried, hit.normal,
+        // Held by a surface that stands still for good (a static line, a fixed body): a resting
+        // approach leaves the turn going on along it; a real impact ends the turn (lecture 3).
+        const bool holdsStill = !first->scripted && first->otherInverseMass == 0.0;
+        TurnEnd goesOn{false, holdsStill, t};
+        // Against two still surfaces at an angle within one turn (a V, a corner), it is wedged: at rest
+        // on both, or still driven into the first, the only velocity both leave is zero. Projected
+        // on each in turn it would lose only |cos| of their angle per impact (1.5 % in a 5-degree V)
+        // and, ending its turns at t = 0, never move again while gravity fed it.
+        if (holdsStill && rested.other >= 0 && std::abs(rested.collision.normal.cross(hit.normal)) > kParallelSine &&
+            (resting || c.velocity.dot(rested.collision.normal) < 0.0)) {
+            c.velocity = {};
+            goesOn.goesOn = false;
+        }
+        if (holdsStill) rested = *first;
+        if (!(approach > 0.0)) return goesOn;
+        ctx.impacts.push_back(Impact{i, first->kind, first->other, now + t, hit.contactPoint + carried, hit.normal,
                                      approach});
         ++ctx.stats.impacts;
-        return true;
+        if (resting) {
+            ++ctx.stats.restingContacts;
+            return goesOn;
+        }
+        goesOn.impact = true;
+        return goesOn;
     }
 
     // A block's turn (lecture 3's Assignment 3.3): it moves over dt or to its first impact against the

@@ -162,25 +162,3 @@ TEST_CASE("the random scene generator is deterministic and covers every kind of 
     CHECK(sources > 20);
     CHECK(sources < 200);
 }
-TEST_CASE("debug seed", "[.debug]") {
-    const std::uint64_t seed = std::strtoull(std::getenv("SEED"), nullptr, 10);
-    RandomScene scene = makeRandomScene(seed);
-    World& world = scene.world;
-    world.setMethod(Method::solver);
-    std::printf("dt %g substeps %d circles %zu bodies %zu pivots %zu ropes %zu water %zu wind %zu magnets %zu thrusters %zu expl %zu\n",
-                world.def().timeStep, world.def().substeps, world.circles().size(), world.bodies().size(), world.pivots().size(),
-                world.ropes().size(), world.fields().waters.size(), world.fields().winds.size(), world.fields().magnets.size(),
-                world.fields().thrusters.size(), scene.explosions.size());
-    for (const Circle& c : world.circles()) std::printf("circle r %g m %g v %g motion %d\n", c.radius, 1 / c.inverseMass, c.velocity.length(), int(c.motion));
-    for (const RigidBody& b : world.bodies()) std::printf("body shape %d he %g %g m %g w %g\n", int(b.shape), b.halfExtents.x, b.halfExtents.y, 1 / b.inverseMass, b.angularVelocity);
-    for (int step = 0; step < 300; ++step) {
-        for (std::size_t e = 0; e < scene.explosions.size(); ++e)
-            if (scene.explosionStep[e] == step) applyExplosion(world, scene.explosions[e]);
-        world.step();
-        double vc = 0, vb = 0, wb = 0;
-        for (const Circle& c : world.circles()) vc = std::max(vc, c.velocity.length());
-        for (const RigidBody& b : world.bodies()) { vb = std::max(vb, b.velocity.length()); wb = std::max(wb, std::abs(b.angularVelocity)); }
-        std::printf("step %d circles %g bodies %g spin %g clamps %lld isolated %lld\n", step + 1, vc, vb, wb, (long long)world.stats().speedClamps, (long long)world.stats().isolatedBodies);
-        if (world.stats().isolatedBodies) break;
-    }
-}

@@ -181,11 +181,11 @@ TEST_CASE("an unknown key is an error, with the closest known key", "[errors]") 
 }
 
 TEST_CASE("values out of range say the range and the value", "[errors]") {
-    CHECK(errorOf(ballWith("radius = 0")) == "s.toml:5:10: radius must be greater than 0, got 0");
-    CHECK(errorOf(ballWith("radius = -0.5")) == "s.toml:5:10: radius must be greater than 0, got -0.5");
+    CHECK(errorOf(ballWith("radius = 0")) == "s.toml:5:10: radius must be between 1e-04 and 10000, got 0");
+    CHECK(errorOf(ballWith("radius = -0.5")) == "s.toml:5:10: radius must be between 1e-04 and 10000, got -0.5");
     CHECK(errorOf(ballWith("radius = nan")) == "s.toml:5:10: radius must be finite, got nan");
     CHECK(errorOf(ballWith("radius = inf")) == "s.toml:5:10: radius must be finite, got inf");
-    CHECK(errorOf(ballWith("radius = 1\nmass = 0")) == "s.toml:6:8: mass must be greater than 0, got 0");
+    CHECK(errorOf(ballWith("radius = 1\nmass = 0")) == "s.toml:6:8: mass must be between 1e-06 and 1e+06, got 0");
     CHECK(errorOf(ballWith("radius = 1\nbounciness = 1.01")) == "s.toml:6:14: bounciness must be between 0 and 1, got 1.01");
     CHECK(errorOf(ballWith("radius = 1\nbounciness = -0.1")) == "s.toml:6:14: bounciness must be between 0 and 1, got -0.1");
     CHECK(errorOf(ballWith("radius = 1\nfriction = -1")) == "s.toml:6:12: friction must be at least 0, got -1");
@@ -201,7 +201,7 @@ TEST_CASE("values out of range say the range and the value", "[errors]") {
 
 TEST_CASE("a segment of zero length is an error at its b", "[errors]") {
     CHECK(errorOf("name = \"x\"\n[[segment]]\na = [1, 2]\nb = [1, 2]\n") == "s.toml:4:5: b must differ from a: the segment has zero length");
-    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [0, 0]\nb = [1, 0]\nradius = -0.1\n") == "s.toml:5:10: radius must be at least 0, got -0.1");
+    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [0, 0]\nb = [1, 0]\nradius = -0.1\n") == "s.toml:5:10: radius must be between 0 and 10000, got -0.1");
 }
 
 TEST_CASE("a circle_grid must not start with its circles overlapping or be absurdly large", "[errors]") {

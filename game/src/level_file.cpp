@@ -151,7 +151,7 @@ void readItem(const toml::table& table, SceneReading& reading) {
     // Cannons, targets, buckets and switches are what goals and scripts point at: they need a name.
     const bool named = *kind == ItemKind::cannon || *kind == ItemKind::target || *kind == ItemKind::bucket;
     const std::string name = readBodyName(reader, reading, named ? Need::required : Need::optional);
-    const auto position = reader.vec2("position", Need::required);
+    const auto position = reader.vec2("position", NumberRange::coordinate(), Need::required);
     ItemDesc item = defaultItem(*kind, position.value_or(Vec2{}));
     item.name = name;
     item.place = reader.tablePlace();

@@ -51,7 +51,9 @@ std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::
     std::ostringstream json;
     json << "{\n  \"level\": " << jsonString(level.name) << ",\n  \"steps\": " << run.frame()
          << ",\n  \"goal_reached\": " << (run.goalFrame() ? "true" : "false")
-         << ",\n  \"goal_frame\": " << (run.goalFrame() ? std::to_string(*run.goalFrame()) : "null") << ",\n  \"events\": [";
+         << ",\n  \"goal_frame\": " << (run.goalFrame() ? std::to_string(*run.goalFrame()) : "null")
+         << ",\n  \"speed_clamps\": " << run.world().stats().speedClamps << ",\n  \"isolated_bodies\": " << run.world().stats().isolatedBodies
+         << ",\n  \"non_finite\": " << (run.world().stats().nonFinite ? "true" : "false") << ",\n  \"events\": [";
     bool first = true;
     for (const GameEvent& e : run.events()) {
         json << (first ? "\n" : ",\n") << "    {\"kind\": \"" << eventName(e.kind) << "\", \"frame\": " << e.frame
@@ -168,9 +170,16 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     for (const GameEvent& e : run.events())
         out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item) << '\n';
     out << "goal:             " << (run.goalFrame() ? "reached at frame " + std::to_string(*run.goalFrame()) : std::string("not reached")) << '\n';
+    out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
+    out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
     if (recorder) out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
     for (const std::string& failure : failures) err << failure << '\n';
     if (!run.goalFrame() && level.level.goal) err << "rube run: goal not reached: " << level.level.goal->text << '\n';
+    // Issue 27: levels as scenes, a run whose physics went non-finite fails (it was silent).
+    if (const std::string why = unstableStateMessage(run.world()); !why.empty()) {
+        err << "rube run: " << why << '\n';
+        return 1;
+    }
     return failures.empty() && (run.goalFrame() || !level.level.goal) ? 0 : 1;
 }
 

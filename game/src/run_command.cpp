@@ -75,6 +75,8 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
     out << "resting contacts: " << s.restingContacts << '\n';
     out << "caps hit:         " << s.capsHit << '\n';
     out << "escapes:          " << s.escapes << '\n';
+    out << "speed clamps:     " << s.speedClamps << '\n';
+    out << "isolated bodies:  " << s.isolatedBodies << '\n';
     out << "state hash:       " << hex16(stateHash(world)) << '\n';
     if (!options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
     if (frames) {
@@ -98,6 +100,16 @@ std::int64_t stepsOf(const RunOptions& options, const SceneDesc& scene) {
 }
 
 } // namespace
+
+std::string unstableStateMessage(const World& world) {
+    const StepStats& s = world.stats();
+    if (!s.nonFinite && s.isolatedBodies == 0) return "";
+    std::string text = "a body's state became NaN or infinite";
+    if (s.isolatedBodies > 0)
+        text += ": " + std::to_string(s.isolatedBodies) + (s.isolatedBodies == 1 ? " body" : " bodies") + " frozen, the first " +
+                (s.firstIsolatedKind == Other::body ? "rigid body " : "circle ") + std::to_string(s.firstIsolated);
+    return text + "; the run's results are not physical";
+}
 
 std::string methodDescription(const World& world) {
     std::string text(methodName(world.def().method));
@@ -211,7 +223,11 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), options, trace,
                  recording ? &recorded : nullptr);
-    if (world.stats().nonFinite) err << "rube run: warning: a body's position or velocity became NaN or infinite\n";
+    // Issue 27: a run whose physics went non-finite fails, whatever else it wrote.
+    if (const std::string why = unstableStateMessage(world); !why.empty()) {
+        err << "rube run: " << why << '\n';
+        return 1;
+    }
     return 0;
 }
 

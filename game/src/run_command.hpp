@@ -18,6 +18,10 @@ namespace rube::game {
 /// "auto (exact 590 steps, solver 10)".
 std::string methodDescription(const World& world);
 
+/// Why the run's physics cannot be trusted (a state went NaN or infinite, a body was isolated), as
+/// one line after "rube run: ", or "" when every state stayed finite (issue 27: such a run exits 1).
+std::string unstableStateMessage(const World& world);
+
 /// What `rube run` was asked to do.
 struct RunOptions {
     std::string scene;                 ///< the scene file

@@ -34,8 +34,8 @@ Material readMaterial(TableReader& table) {
 CircleDef readCircleFields(TableReader& table, SceneReading& reading) {
     CircleDef def;
     if (const auto v = table.vec2("velocity")) def.velocity = *v;
-    if (const auto r = table.number("radius", NumberRange::positive(), Need::required)) def.radius = *r;
-    if (const auto m = table.number("mass", NumberRange::positive())) def.mass = *m;
+    if (const auto r = table.number("radius", NumberRange::size(), Need::required)) def.radius = *r;
+    if (const auto m = table.number("mass", NumberRange::mass())) def.mass = *m;
     if (const auto w = table.number("angular_velocity")) def.angularVelocity = *w;
     // I = k m r^2: 1/2 a solid disc, 1 a thin ring; more than a ring would need mass outside the rim.
     if (const auto k = table.number("inertia", NumberRange{0.0, 1.0, true})) def.inertiaFactor = *k;
@@ -57,7 +57,7 @@ CircleDef readCircleFields(TableReader& table, SceneReading& reading) {
 
 void readCircle(const toml::table& table, SceneReading& reading) {
     TableReader circle(table, "in [[circle]]", kCircleKeys, reading.diag, {}, kNameKey);
-    const auto position = circle.vec2("position", Need::required);
+    const auto position = circle.vec2("position", NumberRange::coordinate(), Need::required);
     CircleDef def = readCircleFields(circle, reading);
     def.position = position.value_or(Vec2{});
     reading.scene.circleNames.push_back(readBodyName(circle, reading));
@@ -66,7 +66,7 @@ void readCircle(const toml::table& table, SceneReading& reading) {
 
 void readCircleGrid(const toml::table& table, SceneReading& reading) {
     TableReader grid(table, "in [[circle_grid]]", kGridKeys, reading.diag);
-    const auto origin = grid.vec2("origin", Need::required);
+    const auto origin = grid.vec2("origin", NumberRange::coordinate(), Need::required);
     const auto columns = grid.integer("columns", 1, 10'000, Need::required);
     const auto rows = grid.integer("rows", 1, 10'000, Need::required);
     const auto spacing = grid.numberOrVec2("spacing", NumberRange::positive(), Need::required);
@@ -107,9 +107,9 @@ void readCircleGrid(const toml::table& table, SceneReading& reading) {
 void readSegment(const toml::table& table, SceneReading& reading) {
     TableReader segment(table, "in [[segment]]", kSegmentKeys, reading.diag, {}, kNameKey);
     SegmentDef def;
-    const auto a = segment.vec2("a", Need::required);
-    const auto b = segment.vec2("b", Need::required);
-    if (const auto r = segment.number("radius", NumberRange::nonNegative())) def.radius = *r;
+    const auto a = segment.vec2("a", NumberRange::coordinate(), Need::required);
+    const auto b = segment.vec2("b", NumberRange::coordinate(), Need::required);
+    if (const auto r = segment.number("radius", NumberRange::thickness())) def.radius = *r;
     def.material = readMaterial(segment);
     const std::string name = readBodyName(segment, reading);
     if (const auto path = readPathReference(segment, reading)) def.path = *path;

@@ -31,7 +31,7 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
     TableReader body(table, where, kBoxKeys, reading.diag, {}, kNameKey);
     RigidBodyDef def;
     def.shape = shape;
-    const auto position = body.vec2("position", Need::required);
+    const auto position = body.vec2("position", NumberRange::coordinate(), Need::required);
     const bool hasSize = body.find("size") != nullptr, hasHalf = body.find("half_extents") != nullptr;
     if (hasSize == hasHalf) {
         body.error(hasSize ? body.valuePlace("half_extents") : body.tablePlace(),
@@ -39,7 +39,7 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
                                            : "give a capsule its size = [length, thickness] or its half_extents = [half core length, radius], one of them");
         return;
     }
-    const auto extents = body.numberOrVec2(hasSize ? "size" : "half_extents", NumberRange::positive(), Need::required);
+    const auto extents = body.numberOrVec2(hasSize ? "size" : "half_extents", NumberRange::size(), Need::required);
     if (!position || !extents) return;
     def.position = *position;
     if (hasHalf) {
@@ -56,11 +56,16 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
         def.halfExtents = {0.5 * extents->x - radius, radius};
     }
     if (const auto a = body.number("angle_degrees")) def.angle = *a * std::numbers::pi / 180.0;
-    const auto mass = body.number("mass", NumberRange::positive());
+    const auto mass = body.number("mass", NumberRange::mass());
     const auto density = body.number("density", NumberRange::positive());
     if (mass && density) body.error(body.valuePlace("density"), "give mass or density, not both");
     if (mass) def.mass = *mass;
-    else if (density) def.mass = *density * areaOf(shape, def.halfExtents);
+    else if (density) {
+        def.mass = *density * areaOf(shape, def.halfExtents);
+        if (!NumberRange::mass().contains(def.mass))
+            body.error(body.valuePlace("density"), "density times area gives a mass of " + formatNumber(def.mass) + " kg; it must be " +
+                                                       NumberRange::mass().describe() + " kg");
+    }
     if (const auto v = body.vec2("velocity")) def.velocity = *v;
     if (const auto w = body.number("angular_velocity")) def.angularVelocity = *w;
     if (const auto c = body.number("bounciness", NumberRange::unit())) def.material.bounciness = *c;
@@ -110,7 +115,7 @@ void readPivot(const toml::table& table, SceneReading& reading) {
         return;
     }
     const RigidBodyDef& body = bodies[static_cast<std::size_t>(*index)];
-    const Vec2 anchor = pivot.vec2("anchor").value_or(body.position);
+    const Vec2 anchor = pivot.vec2("anchor", NumberRange::coordinate()).value_or(body.position);
     // The anchor in the body's own frame: turned back by its angle.
     const Vec2 d = anchor - body.position;
     const double c = std::cos(body.angle), s = std::sin(body.angle);

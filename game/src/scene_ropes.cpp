@@ -49,7 +49,7 @@ void readRope(const toml::table& table, SceneReading& reading) {
         return;
     }
     const auto other = toCircle ? readCircleReference(rope, "other", reading, Need::required) : std::nullopt;
-    const auto anchor = toCircle ? std::nullopt : rope.vec2("anchor", Need::required);
+    const auto anchor = toCircle ? std::nullopt : rope.vec2("anchor", NumberRange::coordinate(), Need::required);
     const auto length = rope.number("length", NumberRange::positive());
     const std::string name = readBodyName(rope, reading);
     if (!circle || (toCircle ? !other : !anchor)) return;

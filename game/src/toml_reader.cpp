@@ -151,6 +151,15 @@ std::optional<Vec2> TableReader::vec2(std::string_view key, Need need) {
     return Vec2{*x, *y};
 }
 
+std::optional<Vec2> TableReader::vec2(std::string_view key, NumberRange range, Need need) {
+    const auto value = vec2(key, need);
+    if (value && (!range.contains(value->x) || !range.contains(value->y))) {
+        error(valuePlace(key), std::string(key) + "'s x and y must be " + range.describe() + ", got " + formatPair(value->x, value->y));
+        return std::nullopt;
+    }
+    return value;
+}
+
 std::optional<Vec2> TableReader::numberOrVec2(std::string_view key, NumberRange range, Need need) {
     const toml::node* found = get(key, need);
     if (!found) return std::nullopt;

@@ -38,6 +38,20 @@ struct NumberRange {
     static NumberRange nonNegative() { return {0.0, std::numeric_limits<double>::infinity(), false}; }
     /// From 0 to 1 inclusive: the coefficient of restitution C (lecture 3).
     static NumberRange unit() { return {0.0, 1.0, false}; }
+    // The ranges below keep every product the physics forms finite and resolvable (issue 27; a mass
+    // of 4.9e-324 made 1/m infinite, a pivot at [1e9, 1e9] lost the joint's metres to round-off).
+    // Every shipped level and scene lies well inside them: masses 0.01 to 1,571 kg, sizes 0.0286 to
+    // 3 m, positions within 40 m.
+    /// Masses, kg: a milligram to a thousand tonnes. The largest ratio, 1e12, still leaves 1/m and
+    /// impulse sums (m v, m v^2 at speeds up to 1e9 m/s) far from overflow and underflow.
+    static NumberRange mass() { return {1e-6, 1e6, false}; }
+    /// Body sizes (radii, half extents), m: 0.1 mm to 10 km. I = k m r^2 >= 1e-14 keeps 1/I finite.
+    static NumberRange size() { return {1e-4, 1e4, false}; }
+    /// Thicknesses (a segment's radius), m: 0 (the lecture's thin line) up to 10 km.
+    static NumberRange thickness() { return {0.0, 1e4, false}; }
+    /// Coordinates of positions and anchors, m: within the world's escape bounds (+-1e6, WorldDef::bounds),
+    /// where a double still resolves 1e-10 m, so contact gaps of a millimetre are exact to round-off.
+    static NumberRange coordinate() { return {-1e6, 1e6, false}; }
 
     /// True when `value` lies in the interval.
     bool contains(double value) const;
@@ -94,6 +108,8 @@ public:
     std::optional<std::int64_t> integer(std::string_view key, std::int64_t min, std::int64_t max, Need need = Need::optional);
     /// An [x, y] pair of finite numbers.
     std::optional<Vec2> vec2(std::string_view key, Need need = Need::optional);
+    /// As vec2, and both coordinates must lie in `range` (NumberRange::coordinate() for positions).
+    std::optional<Vec2> vec2(std::string_view key, NumberRange range, Need need = Need::optional);
     /// Either one number, used for both x and y, or an [x, y] pair.
     std::optional<Vec2> numberOrVec2(std::string_view key, NumberRange range, Need need = Need::optional);
     /// A string.

@@ -1,6 +1,8 @@
 // The rigid bodies' part of the solver's step: states, contacts found once per step, substep stages.
 #include "rigid_stage.hpp"
 
+#include "speed_limits.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,6 +54,9 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     gravity_ = ctx.def.gravity;
     stepTime_ = dt;
     substeps_ = std::max(1, ctx.def.substeps);
+    speedLimit_ = ctx.def.maxTranslation / dt; // the step's limits, held at every substep (speed_limits.cpp)
+    spinLimit_ = ctx.def.maxRotation / dt;
+    clamps_ = 0;
     thickness_.resize(n);
     reach_.resize(n);
     shapes_.resize(n);
@@ -163,6 +168,9 @@ void RigidStage::solve(double h, bool useBias) {
 
 void RigidStage::integratePositions(double h) {
     for (RigidState& s : states_) {
+        // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
+        // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
+        if (s.inverseMass > 0.0 || s.inverseInertia > 0.0) clamps_ += clampRigidMotion(s.velocity, s.omega, speedLimit_, spinLimit_);
         s.displacement += s.velocity * h;
         if (s.omega == 0.0) continue;
         s.turn += s.omega * h;
@@ -178,6 +186,7 @@ void RigidStage::applyRestitution(double threshold) {
 }
 
 void RigidStage::finish(StepContext& ctx) const {
+    ctx.stats.speedClamps += clamps_;
     for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
         RigidBody& b = ctx.bodies[i];
         if (b.motion == Motion::fixed) continue;

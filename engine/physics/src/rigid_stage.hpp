@@ -67,6 +67,8 @@ private:
     bool resolveSweptHit(StepContext& ctx, std::size_t body, int segment, const SweptShape& shape, double t, double dt);
 
     int circleCount_ = 0;
+    double speedLimit_ = 0.0, spinLimit_ = 0.0; // WorldDef::maxTranslation and maxRotation over the step, per second
+    std::int64_t clamps_ = 0;                  // substep clamps this step, added to the stats in finish()
     int substep_ = 0;     // the substep the next warm start begins
     double substepTime_ = 0.0; // h, s
     std::vector<RigidState> states_;

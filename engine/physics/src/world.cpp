@@ -5,6 +5,7 @@
 #include "kinematic_pose.hpp"
 #include "rope_constraint.hpp"
 #include "solver_sleep.hpp"
+#include "speed_limits.hpp"
 #include "step_method.hpp"
 
 #include <algorithm>
@@ -54,7 +55,7 @@ std::optional<Method> methodFromName(std::string_view name) {
     return std::nullopt;
 }
 
-World::World(const WorldDef& def) : def_(def), method_(makeMethod(def.method)) {}
+World::World(const WorldDef& def) : def_(def), method_(makeMethod(def.method)), finite_(std::make_unique<FiniteSnapshot>()) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
@@ -184,6 +185,10 @@ void World::step() {
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
+    // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
+    // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
+    isolateNonFinite(circles_, bodies_, *finite_, stats_);
+    if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, *finite_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_};
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
@@ -214,9 +219,10 @@ void World::step() {
 }
 
 void World::checkState() {
+    // A body the step made non-finite is frozen where it last was finite and reported (speed_limits.cpp).
+    isolateNonFinite(circles_, bodies_, *finite_, stats_);
     for (std::size_t i = 0; i < circles_.size(); ++i) {
         const Circle& c = circles_[i];
-        if (!isFinite(c.position) || !isFinite(c.velocity)) stats_.nonFinite = true;
         if (!escaped_[i] && !def_.bounds.contains(c.position)) {
             escaped_[i] = 1;
             ++stats_.escapes;
@@ -225,8 +231,6 @@ void World::checkState() {
     // Rigid bodies as circles: their centre leaving the bounds, a NaN in any part of the state.
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
         const RigidBody& b = bodies_[i];
-        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity))
-            stats_.nonFinite = true;
         if (!escapedBodies_[i] && !def_.bounds.contains(b.position)) {
             escapedBodies_[i] = 1;
             ++stats_.escapes;

@@ -52,6 +52,14 @@ struct WorldDef {
     /// Worlds with ropes or rigid bodies keep every circle awake.
     double sleepSpeed = 0.01;
     double timeToSleep = 0.5;   ///< seconds, see sleepSpeed
+    /// solver and auto: the most a dynamic rigid body (box, capsule; not a circle, which the solver
+    /// sweeps) may move in one step, m.
+    /// Faster bodies are slowed to it before the step and counted (StepStats::speedClamps): as Box2D's
+    /// b2_maxTranslation (2 m a step), a bound where the solver cannot resolve the motion.
+    double maxTranslation = 2.0;
+    /// solver and auto: the most a turning rigid body may turn in one step, radians (Box2D v3's
+    /// 0.25 pi): past it the contact manifold of the step's start no longer describes the body.
+    double maxRotation = 0.25 * 3.14159265358979323846;
 };
 
 /// What kind of thing a circle (or a block) hit.
@@ -79,10 +87,15 @@ struct StepStats {
     int maxEventsInStep = 0;
     std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver (the rest went to exact)
     bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
+    std::int64_t speedClamps = 0;    ///< solver and auto: speeds cut to WorldDef::maxTranslation or maxRotation (one per body and step)
+    std::int64_t isolatedBodies = 0; ///< bodies frozen because their state went non-finite (see World::step)
+    Other firstIsolatedKind = Other::circle; ///< the first isolated body: a circle or a rigid body (Other::body)
+    int firstIsolated = -1;          ///< its index among the world's circles or bodies, -1 when none was isolated
 };
 
 class StepMethod;
 struct RopeStart;
+struct FiniteSnapshot;
 
 /// A physics world. Not copyable (it owns its method); movable.
 class World {
@@ -113,7 +126,10 @@ public:
     Fields& fields() { return fields_; }
     const Fields& fields() const { return fields_; }
 
-    /// Advances the world by one time step with its method. Throws std::logic_error when the world has
+    /// Advances the world by one time step with its method. Under solver and auto, speeds past
+    /// WorldDef::maxTranslation and maxRotation are clamped first (StepStats::speedClamps); a body whose
+    /// state is or becomes non-finite is frozen at its last finite pose with infinite mass, so it cannot
+    /// corrupt the others, and reported (StepStats::isolatedBodies, nonFinite). Throws std::logic_error when the world has
     /// rigid bodies that turn (not fixed-rotation boxes), capsules or pivots, and its method is one
     /// that does not model them (discrete, turn-based, exact): only solver and auto do.
     void step();
@@ -153,6 +169,7 @@ private:
     std::vector<std::uint8_t> escaped_;
     std::vector<std::uint8_t> escapedBodies_; ///< per rigid body, as escaped_ per circle
     std::unique_ptr<StepMethod> method_;
+    std::unique_ptr<FiniteSnapshot> finite_; ///< each body's last finite pose, for isolating one that goes non-finite
     StepStats stats_;
     double time_ = 0.0;
     bool mayHaveSleepers_ = false; ///< some step let islands sleep since every circle was last woken

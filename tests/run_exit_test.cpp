@@ -10,7 +10,7 @@
 
 using namespace rube;
 
-TEST_CASE("a run with a body gone non-finite has a one-line reason; a finite run has none", "[robustness][exit]") {
+TEST_CASE("a run with a body gone non-finite has a one-line reason, a finite run has none", "[robustness][exit]") {
     WorldDef def;
     World world(def);
     CircleDef ball;

@@ -364,7 +364,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
                   return a.body < b.body;
               });
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
-    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep);
+    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep, ctx.def.gravity);
 }
 
 } // namespace

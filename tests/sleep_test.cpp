@@ -307,3 +307,23 @@ TEST_CASE("a ball at rest on a level floor or in a bowl is held there and sleeps
         CHECK(std::abs(bowl.circles()[0].position.x) < 0.2 + 1e-9); // on the flat bottom
     }
 }
+
+TEST_CASE("a spin counts against sleeping only where friction lets it act", "[sleep]") {
+    // Spinning in place on a frictionless floor, nothing the ball touches can turn it or be turned by
+    // it: slow in translation, it sleeps (and the spin stops). On a floor with friction the spin sets
+    // it rolling, faster than sleep_speed, and it stays awake.
+    for (const double friction : {0.0, 0.5}) {
+        World world(sleepyDef());
+        SegmentDef floor = line({-5.0, 0.0}, {5.0, 0.0});
+        floor.material = {0.0, friction};
+        world.addSegment(floor);
+        CircleDef c = ball({0.0, 0.1}, {}, 0.1);
+        c.material = {0.0, 0.5};
+        c.angularVelocity = 20.0; // a surface speed of 2 m/s
+        world.addCircle(c);
+        const int steps = stepUntilAsleep(world, 120);
+        INFO("floor friction " << friction << ": " << steps << " steps, v " << world.circles()[0].velocity.x);
+        if (friction == 0.0) CHECK(steps <= 60);
+        else CHECK((steps > 120 && std::abs(world.circles()[0].velocity.x) > 0.1));
+    }
+}

@@ -156,13 +156,42 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
     const int circleCount = static_cast<int>(circles.size());
     const double limit2 = sleepSpeed * sleepSpeed;
     state_.assign(static_cast<std::size_t>(circleCount), other);
+    // Per awake dynamic circle: slow, or slow but spinning (its surface's speed about the centre over
+    // sleep_speed), or neither. A spin counts only where it can act: through a pushing contact with
+    // friction. Spinning in place on a frictionless floor, a ball touches nothing its spin could turn
+    // or be stopped by; sleeping stops that spin, as it would stop any other motion under sleep_speed.
+    enum : std::uint8_t { moving, slow, spinning };
+    slowness_.assign(static_cast<std::size_t>(circleCount), moving);
+    bool anySpinning = false;
+    for (int i = 0; i < circleCount; ++i) {
+        const Circle& c = circles[static_cast<std::size_t>(i)];
+        if (c.motion != Motion::dynamic || c.inverseMass <= 0.0 || c.sleep.asleep) continue;
+        const double spin = c.angularVelocity * c.radius;
+        if (!(c.velocity.lengthSquared() < limit2)) continue;
+        const bool spins = !(spin * spin < limit2);
+        slowness_[static_cast<std::size_t>(i)] = spins ? spinning : slow;
+        anySpinning = anySpinning || spins;
+    }
+    if (anySpinning) {
+        const int firstSegment = circleCount; // solver bodies: circles, then segments
+        const auto grip = [&](int i) {
+            std::uint8_t& s = slowness_[static_cast<std::size_t>(i)];
+            if (s == spinning) s = moving;
+        };
+        for (const ContactConstraint& c : contacts) {
+            if (!(c.impulse > 0.0 || c.baseSeparation <= 0.0)) continue;
+            const double otherFriction = c.b < firstSegment ? circles[static_cast<std::size_t>(c.b)].material.friction
+                                                            : segments[static_cast<std::size_t>(c.b - firstSegment)].material.friction;
+            if (circles[static_cast<std::size_t>(c.a)].material.friction * otherFriction <= 0.0) continue;
+            grip(c.a);
+            if (c.b < firstSegment) grip(c.b);
+        }
+    }
     int readyCount = 0;
     for (int i = 0; i < circleCount; ++i) {
         Circle& c = circles[static_cast<std::size_t>(i)];
         if (c.motion != Motion::dynamic || c.inverseMass <= 0.0 || c.sleep.asleep) continue;
-        const double spin = c.angularVelocity * c.radius; // the surface's speed about the centre
-        const bool slow = c.velocity.lengthSquared() < limit2 && spin * spin < limit2;
-        c.sleep.slowFor = slow ? c.sleep.slowFor + dt : 0.0;
+        c.sleep.slowFor = slowness_[static_cast<std::size_t>(i)] != moving ? c.sleep.slowFor + dt : 0.0;
         const bool isReady = c.sleep.slowFor >= timeToSleep;
         state_[static_cast<std::size_t>(i)] = isReady ? ready : awake;
         readyCount += isReady;

@@ -61,6 +61,7 @@ private:
 
     std::vector<int> parent_;            // union-find over the circles ready to sleep
     std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
+    std::vector<std::uint8_t> slowness_; // scratch: per circle, moving, slow, or slow but spinning
     std::vector<std::uint8_t> blocked_;  // per circle, then per root: touches an awake circle or a moving kinematic body
     std::vector<int> asleep_;                 // scratch: the sleepers this step
     std::vector<std::uint8_t> islandReached_; // scratch: per island (a circle index), something reached it this step

@@ -395,8 +395,9 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot; 
     const Played solved = playFrom(0.3);
     REQUIRE(solved.goal);
     // 308 since rigid contacts are warm started between steps (299 before): the dominoes rest on the floor
-    // without sinking and the last one reaches the marble nine steps later.
-    CHECK(*solved.goal == 308);
+    // without sinking and the last one reaches the marble nine steps later. 314 since the solver's
+    // contacts closing fast take their time-of-impact normal: the striker's glancing blows differ.
+    CHECK(*solved.goal == 314);
     // Turned over: left end down on the floor, 1.5 sin a + 0.05 cos a = 0.6, a = 0.378 rad.
     CHECK(solved.plankAngle == Approx(0.378).margin(0.005));
     CHECK(solved.heavyLeftmost > -0.3); // the gate stopped the heavy ball: only the striker went on

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 using namespace rube;
@@ -228,4 +229,101 @@ TEST_CASE("auto lets a pile sleep as the solver does, and exact steps wake it", 
     World automatic = makeBox(120, 2.0, sleepyDef(Method::automatic));
     const int solverSteps = stepUntilAsleep(solver, 600);
     CHECK(stepUntilAsleep(automatic, 600) == solverSteps);
+}
+
+namespace {
+
+/// A frictionless ball of radius 0.1 m set at rest on a line tilted `degrees` down to the right; returns
+/// how far along the line it has slid after `seconds`, the distance x = g sin(theta) t^2 / 2 would give.
+struct Slide {
+    double travelled = 0.0;
+    double expected = 0.0;
+    bool everAsleep = false;
+};
+
+Slide slideDown(Method method, double degrees, double seconds) {
+    World world(sleepyDef(method));
+    const double theta = degrees * std::numbers::pi / 180.0;
+    const Vec2 along{std::cos(theta), -std::sin(theta)}, up{std::sin(theta), std::cos(theta)};
+    SegmentDef slope = line(along * -1.0, along * 20.0);
+    slope.material = {0.0, 0.0};
+    world.addSegment(slope);
+    CircleDef c = ball(up * 0.1, {}, 0.1);
+    c.material = {0.0, 0.0};
+    world.addCircle(c);
+    const int steps = static_cast<int>(std::lround(seconds / world.def().timeStep));
+    Slide slide;
+    for (int step = 0; step < steps; ++step) {
+        world.step();
+        slide.everAsleep = slide.everAsleep || world.circles()[0].sleep.asleep;
+    }
+    slide.travelled = (world.circles()[0].position - up * 0.1).dot(along);
+    slide.expected = 0.5 * world.def().gravity.length() * std::sin(theta) * world.time() * world.time();
+    return slide;
+}
+
+} // namespace
+
+TEST_CASE("a frictionless ball on a shallow incline slides as g sin(theta) t^2 / 2: slow is not asleep", "[sleep][incline]") {
+    // 0.01 degree pushes it 1.7 mm/s^2 along the line: under sleep_speed for its first 5.9 s.
+    for (const Method method : {Method::solver, Method::automatic}) {
+        for (const double degrees : {0.01, 0.02, 0.05, 0.1, 0.12, 0.2, 0.5, 1.0}) {
+            const Slide slide = slideDown(method, degrees, 10.0);
+            INFO(methodName(method) << ", " << degrees << " degrees: slid " << slide.travelled << " m, expected " << slide.expected);
+            CHECK_FALSE(slide.everAsleep);
+            CHECK(slide.travelled == Approx(slide.expected).epsilon(0.01));
+        }
+    }
+}
+
+TEST_CASE("a ball at rest on a level floor or in a bowl is held there and sleeps", "[sleep][incline]") {
+    for (const double friction : {0.0, 0.5}) {
+        INFO("friction " << friction);
+        World floor(sleepyDef());
+        SegmentDef level = line({-2.0, 0.0}, {2.0, 0.0});
+        level.material = {0.0, friction};
+        floor.addSegment(level);
+        CircleDef c = ball({0.3, 0.1}, {}, 0.1);
+        c.material = {0.0, friction};
+        floor.addCircle(c);
+        CHECK(stepUntilAsleep(floor, 60) <= 60);
+
+        // A bowl of five lines, its sides 30 and 60 degrees about a flat bottom: dropped off-centre,
+        // the ball slides (or rolls) about the bottom until the corners' losses slow it under
+        // sleep_speed there (a rolling ball, which loses nothing on the flat, only at a corner).
+        World bowl(sleepyDef());
+        const std::vector<Vec2> rim{{-1.5, 1.6}, {-0.8, 0.4}, {-0.2, 0.05}, {0.2, 0.05}, {0.8, 0.4}, {1.5, 1.6}};
+        for (std::size_t k = 0; k + 1 < rim.size(); ++k) {
+            SegmentDef side = line(rim[k], rim[k + 1]);
+            side.material = {0.0, friction};
+            bowl.addSegment(side);
+        }
+        CircleDef dropped = ball({-0.5, 1.2}, {}, 0.1);
+        dropped.material = {0.0, friction};
+        bowl.addCircle(dropped);
+        const int steps = stepUntilAsleep(bowl, 3600);
+        INFO("asleep after " << steps << " steps at " << bowl.circles()[0].position.x << ", " << bowl.circles()[0].position.y);
+        CHECK(steps <= 3600);
+        CHECK(std::abs(bowl.circles()[0].position.x) < 0.2 + 1e-9); // on the flat bottom
+    }
+}
+
+TEST_CASE("a spin counts against sleeping only where friction lets it act", "[sleep]") {
+    // Spinning in place on a frictionless floor, nothing the ball touches can turn it or be turned by
+    // it: slow in translation, it sleeps (and the spin stops). On a floor with friction the spin sets
+    // it rolling, faster than sleep_speed, and it stays awake.
+    for (const double friction : {0.0, 0.5}) {
+        World world(sleepyDef());
+        SegmentDef floor = line({-5.0, 0.0}, {5.0, 0.0});
+        floor.material = {0.0, friction};
+        world.addSegment(floor);
+        CircleDef c = ball({0.0, 0.1}, {}, 0.1);
+        c.material = {0.0, 0.5};
+        c.angularVelocity = 20.0; // a surface speed of 2 m/s
+        world.addCircle(c);
+        const int steps = stepUntilAsleep(world, 120);
+        INFO("floor friction " << friction << ": " << steps << " steps, v " << world.circles()[0].velocity.x);
+        if (friction == 0.0) CHECK(steps <= 60);
+        else CHECK((steps > 120 && std::abs(world.circles()[0].velocity.x) > 0.1));
+    }
 }

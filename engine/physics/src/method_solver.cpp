@@ -6,6 +6,7 @@
 #include "rigid_stage.hpp"
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
+#include "solver_impact_normal.hpp"
 #include "solver_sleep.hpp"
 #include "solver_sweep.hpp"
 #include "solver_turning.hpp"
@@ -247,6 +248,9 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
         grid_.findPairs(circleBoxes_, segmentBoxes_, isDynamic_, pairs_);
     }
     buildContacts(pairs_, ctx.circles, ctx.segments, margins_, inverseMass_, cache_, contacts_, records_);
+    // A pair closing fast is caught where it will touch, not where it starts (a glance at a cap).
+    aimAtTimeOfImpact(contacts_, records_, ctx.circles, ctx.segments, inverseMass_, ctx.def.gravity, dt,
+                      dt / std::max(1, ctx.def.substeps), ctx.restingSpeed);
     const Vec2 up = ctx.def.gravity.lengthSquared() > 0.0 ? -ctx.def.gravity.normalized() : Vec2{0.0, 1.0};
     orderContacts(contacts_, records_, start_, inverseMass_, up, grid_.cellSize(), orderScratch_);
     hasRigid_ = !ctx.bodies.empty();
@@ -364,7 +368,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
                   return a.body < b.body;
               });
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
-    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep);
+    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep, ctx.def.gravity);
 }
 
 } // namespace

@@ -3,13 +3,17 @@
 // nothing: circles that stay slow (under WorldDef::sleepSpeed, their surfaces' spin too) for
 // WorldDef::timeToSleep together with every circle they touch are put to sleep as one island, with
 // zero velocity and spin, and the solver then treats them as fixed until something reaches them.
+// Slow is not enough: a circle sleeps only while its contacts can hold it against gravity (the push
+// gravity gives it, less what its contact normals, and with two contacts or more their friction
+// cones, can cancel, is about zero), so a ball creeping down a shallow incline keeps sliding.
 //
 // What wakes an island, before the step solves anything:
 //   - a velocity or spin changed from outside (an explosion, a field, the game's balloons);
 //   - an awake dynamic circle near enough to be a candidate pair (its path's box for a bullet);
 //   - a moving kinematic body (path-driven circle or segment) whose swept box reaches it.
 // A waking island starts slow from zero again. Sleeping changes nothing a settled scene shows: the
-// bodies it stops were moving slower than a centimetre a second.
+// bodies it stops were slower than a centimetre a second and held where they were; only a drift
+// that nothing pushes (under 1 cm/s, on a level floor or in free flight) is stopped with them.
 
 #include "broadphase_grid.hpp"
 #include "contact_solver.hpp"
@@ -36,19 +40,33 @@ public:
                      std::span<const BoundingBox> bulletPaths);
 
     /// After the step: counts how long each awake dynamic circle has been slow, joins circles with a
-    /// contact (speculative ones too) into islands, and puts to sleep every island that has
-    /// been slow for `timeToSleep` and is not carried by a moving kinematic body.
+    /// contact (speculative ones too) into islands, and puts to sleep every island that has been
+    /// slow for `timeToSleep`, whose every member its contacts hold against `gravity`, and that is
+    /// not carried by a moving kinematic body.
     void update(std::span<Circle> circles, std::span<const Segment> segments, std::span<const ContactConstraint> contacts,
-                double dt, double sleepSpeed, double timeToSleep);
+                double dt, double sleepSpeed, double timeToSleep, Vec2 gravity);
 
 private:
+    /// The directions a circle's contacts can push it in, kept as the nearest to `up` on either side
+    /// (in 2-D two rays span every cone the others do: Caratheodory for cones).
+    struct HoldRays {
+        Vec2 left, right;                      // unit rays counter-clockwise and clockwise of up
+        double leftDot = -2.0, rightDot = -2.0; // their cosines with up; -2: none yet
+        void offer(Vec2 up, Vec2 ray);
+        bool holds(Vec2 up, double push) const;
+    };
     int find(int i);
+    void demoteUnheld(std::span<const Circle> circles, std::span<const Segment> segments,
+                      std::span<const ContactConstraint> contacts, Vec2 gravity);
 
     std::vector<int> parent_;            // union-find over the circles ready to sleep
     std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
+    std::vector<std::uint8_t> slowness_; // scratch: per circle, moving, slow, or slow but spinning
     std::vector<std::uint8_t> blocked_;  // per circle, then per root: touches an awake circle or a moving kinematic body
     std::vector<int> asleep_;                 // scratch: the sleepers this step
     std::vector<std::uint8_t> islandReached_; // scratch: per island (a circle index), something reached it this step
+    std::vector<HoldRays> normalRays_, coneRays_; // scratch: per circle, what its contacts' normals, and friction cones, can push
+    std::vector<int> holding_;                    // scratch: per circle, its contacts that can push
 };
 
 } // namespace rube

@@ -164,7 +164,11 @@ bool ContinuousSweep::resolve(int i, const Hit& hit, const SweepInput& in, StepC
         otherBounciness = seg.material.bounciness;
         ci.position = relative + segMove + normal * kClampGap;
     }
-    const double vn = (ci.velocity - otherVelocity).dot(normal);
+    // The circle's velocity is the step's end velocity; against infinite mass it is bounced as it was
+    // at the time of impact (gravity for the rest of the step taken off, then given back), as the
+    // exact method does. Two dynamic circles fall alike: their relative velocity needs no such care.
+    const Vec2 afterImpact = otherInverseMass > 0.0 ? Vec2{} : ctx.def.gravity * ((1.0 - hit.t) * dt);
+    const double vn = (ci.velocity - afterImpact - otherVelocity).dot(normal);
     const double inverseMassSum = ci.inverseMass + otherInverseMass;
     if (vn >= 0.0 || inverseMassSum <= 0.0) return false; // leaving already: the clamp keeps it on its side
     // v' = u - C (v - u) along the normal (lecture 3), as an impulse shared by inverse mass; slow
@@ -172,6 +176,8 @@ bool ContinuousSweep::resolve(int i, const Hit& hit, const SweepInput& in, StepC
     const bool resting = -vn <= ctx.restingSpeed;
     const double bounciness = resting ? 0.0 : ci.material.bounciness * otherBounciness;
     const double impulse = -(1.0 + bounciness) * vn / inverseMassSum;
+    // The impulse cancels the approach and C of it; the normal part of gravity after the impact
+    // stays in the velocity (it already was).
     ci.velocity += normal * (impulse * ci.inverseMass);
     if (otherIsCircle) circles[hit.other].velocity -= normal * (impulse * otherInverseMass);
     if (resting) {

@@ -1,0 +1,153 @@
+// Solver bounces against lecture 3's formulas: over impact speeds 0.1 to 100 m/s at 60 Hz, a ball
+// leaves a line cap, a tilted line and another ball within 0.5 degrees and 0.5 % of the exact
+// outcome, v' = v - (1 + C)(v.n)n with n the normal at the true point of impact (and between two
+// balls, momentum and Newton's restitution along the line of centres at the time of impact).
+#include "rube/physics/world.hpp"
+#include "scene_builders.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+using namespace rube;
+using rube::test::ball;
+using rube::test::line;
+
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+const std::vector<double> kSpeeds{0.1, 0.3, 1.0, 3.0, 10.0, 20.0, 30.0, 100.0};
+/// Where within a step the pair touches: early, mid-step, late.
+const std::vector<double> kTouchFractions{0.1, 0.5, 0.9};
+
+/// How far a velocity is from the exact one: the angle between them and the relative speed error.
+struct Miss {
+    double degrees = 0.0;
+    double speed = 0.0;
+};
+
+Miss miss(Vec2 got, Vec2 exact) {
+    return {std::abs(std::atan2(exact.cross(got), exact.dot(got))) * kDegrees, std::abs(got.length() / exact.length() - 1.0)};
+}
+
+/// Weightless, so every velocity after the bounce stays as the bounce left it.
+WorldDef weightless(Method method) {
+    WorldDef def;
+    def.gravity = {};
+    def.method = method;
+    return def;
+}
+
+/// Runs until `seconds` past the touch; the ball starts 2 + `fraction` steps before it touches.
+void runPast(World& world, double fraction) {
+    const int steps = 2 + static_cast<int>(std::ceil(fraction)) + 3;
+    for (int step = 0; step < steps; ++step) world.step();
+}
+
+} // namespace
+
+TEST_CASE("solver: a ball striking a line cap leaves along the exact reflection at every speed", "[solver][bounce]") {
+    // A thin horizontal line ending at the origin, its cap a rounded end of radius 0.05; the ball
+    // (r = 0.1, C = 1 and 0.5) comes in along -x, `offset` of the reach above or below the axis.
+    const double reach = 0.15;
+    for (const Method method : {Method::exact, Method::solver}) {
+        for (const double bounciness : {1.0, 0.5}) {
+            for (const double speed : kSpeeds) {
+                for (const double offset : {0.0, 0.3, -0.6, 0.8, 0.95}) {
+                    for (const double fraction : kTouchFractions) {
+                        World world(weightless(method));
+                        SegmentDef arm = line({-3.0, 0.0}, {0.0, 0.0}, 0.05);
+                        arm.material = {1.0, 0.0};
+                        world.addSegment(arm);
+                        const double y = offset * reach;
+                        const Vec2 touch{std::sqrt(reach * reach - y * y), y};
+                        const Vec2 v{-speed, 0.0};
+                        CircleDef c = ball(touch - v * ((2.0 + fraction) * world.def().timeStep), v, 0.1);
+                        c.material = {bounciness, 0.0};
+                        world.addCircle(c);
+                        runPast(world, fraction);
+                        const Vec2 n = touch / reach;
+                        const Vec2 exact = v - n * ((1.0 + bounciness) * v.dot(n));
+                        const Miss m = miss(world.circles()[0].velocity, exact);
+                        INFO(methodName(method) << ": C " << bounciness << ", " << speed << " m/s, offset " << offset << ", touching "
+                                                << fraction << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
+                        CHECK(m.degrees < 0.5);
+                        CHECK(m.speed < 0.005);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("solver: two balls leave a glancing impact with momentum and restitution along the line of centres", "[solver][bounce]") {
+    // Ball A (1 kg, r = 0.1) strikes ball B (2 kg, r = 0.15) at rest, `parameter` of the sum of the
+    // radii off centre: at the time of impact n = (pA - pB) / R, and the impulse
+    // J = -(1 + C) (vA . n) / (1/mA + 1/mB) moves A by J n / mA and B by -J n / mB.
+    const double reach = 0.25;
+    for (const Method method : {Method::exact, Method::solver}) {
+        for (const double bounciness : {1.0, 0.6}) {
+            for (const double speed : kSpeeds) {
+                for (const double parameter : {0.0, 0.25, 0.5, 0.75, 0.95}) {
+                    for (const double fraction : kTouchFractions) {
+                        World world(weightless(method));
+                        const Vec2 v{speed, 0.0};
+                        const Vec2 offsetAtImpact{-reach * std::sqrt(1.0 - parameter * parameter), reach * parameter};
+                        CircleDef a = ball(offsetAtImpact - v * ((2.0 + fraction) * world.def().timeStep), v, 0.1);
+                        a.material = {bounciness, 0.0};
+                        CircleDef b = ball({}, {}, 0.15);
+                        b.mass = 2.0;
+                        b.material = {1.0, 0.0};
+                        world.addCircle(a);
+                        world.addCircle(b);
+                        runPast(world, fraction);
+                        const Vec2 n = offsetAtImpact / reach;
+                        const double impulse = -(1.0 + bounciness) * v.dot(n) / (1.0 + 0.5);
+                        const Miss missA = miss(world.circles()[0].velocity, v + n * impulse);
+                        const Miss missB = miss(world.circles()[1].velocity, n * (-impulse / 2.0));
+                        INFO(methodName(method) << ": C " << bounciness << ", " << speed << " m/s, parameter " << parameter << ", touching "
+                                                << fraction << " into a step: A " << missA.degrees << " degrees, speed off " << missA.speed
+                                                << "; B " << missB.degrees << " degrees, speed off " << missB.speed);
+                        CHECK(missA.degrees < 0.5);
+                        CHECK(missA.speed < 0.005);
+                        CHECK(missB.degrees < 0.5);
+                        CHECK(missB.speed < 0.005);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("solver: a ball bouncing on a tilted line leaves along the exact reflection at every speed", "[solver][bounce]") {
+    // A line tilted 17 degrees; the ball comes in at 20 to 160 degrees to it.
+    const double tilt = 17.0 / kDegrees;
+    const Vec2 along{std::cos(tilt), std::sin(tilt)}, n{-std::sin(tilt), std::cos(tilt)};
+    for (const Method method : {Method::exact, Method::solver}) {
+        for (const double speed : kSpeeds) {
+            for (const double incoming : {20.0, 60.0, 90.0, 135.0, 160.0}) {
+                for (const double fraction : kTouchFractions) {
+                    World world(weightless(method));
+                    SegmentDef slope = line(along * -200.0, along * 200.0);
+                    slope.material = {1.0, 0.0};
+                    world.addSegment(slope);
+                    const double angle = incoming / kDegrees;
+                    const Vec2 v = (along * std::cos(angle) - n * std::sin(angle)) * speed;
+                    const Vec2 touch = n * 0.1;
+                    CircleDef c = ball(touch - v * ((2.0 + fraction) * world.def().timeStep), v, 0.1);
+                    c.material = {0.7, 0.0};
+                    world.addCircle(c);
+                    runPast(world, fraction);
+                    const Vec2 exact = v - n * ((1.0 + 0.7) * v.dot(n));
+                    const Miss m = miss(world.circles()[0].velocity, exact);
+                    INFO(methodName(method) << ": " << speed << " m/s at " << incoming << " degrees, touching " << fraction
+                                            << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
+                    CHECK(m.degrees < 0.5);
+                    CHECK(m.speed < 0.005);
+                }
+            }
+        }
+    }
+}

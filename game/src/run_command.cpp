@@ -4,6 +4,7 @@
 #include "scene_reading.hpp"
 
 #include "frame_recorder.hpp"
+#include "method_budget.hpp"
 #include "play_command.hpp"
 #include "run_interrupt.hpp"
 #include "scene_file.hpp"
@@ -109,6 +110,10 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
         err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules or pivots of "
             << options.scene << ": use auto or solver\n";
+        return 2;
+    }
+    if (const std::string why = methodBudgetRefusal(scene, method.value_or(scene.world.method)); !why.empty()) {
+        err << "rube run: " << options.scene << ": " << why << '\n';
         return 2;
     }
     // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.

@@ -156,3 +156,26 @@ rube_play_test("a bad --script is reported at its place" "${RUBE_GAME_LEVELS}/ca
                "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
 rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit-after|0" 2
                "-DSTDERR_LINE=rube: --quit-after: expected a whole number of frames from 1 to 1000000000, got '0' (see 'rube play --help')")
+
+# Methods without a broadphase (discrete, turn-based, exact) refuse a scene whose pair tests exceed
+# 2^22 (issue 27: 100,000 circles under exact took 10 GB and minutes a step): status 2, one line
+# naming the methods that scale. The same scene runs under those, and a scene inside the budget
+# runs under exact.
+set(over ${RUBE_CLI_DIR}/pairs-over-budget.toml)
+rube_cli_test("exact refuses a scene over its pair budget" "run|${over}|--no-render|--steps|1|--trace|${RUBE_CLI_OUT}/over.csv" 2
+              -DTRACE=${RUBE_CLI_OUT}/over.csv -DNO_TRACE=ON
+              "-DSTDERR_LINE=rube run: ${over}: method exact tests every pair of shapes, and 2100 moving bodies among 2101 shapes make 4412100 pair tests a search, more than the 4194304 it affords: use auto or solver")
+foreach(method discrete turn-based)
+  set(unit "a search")
+  if(method STREQUAL "discrete")
+    set(unit "a step")
+  endif()
+  rube_cli_test("${method} refuses a scene over its pair budget" "run|${over}|--no-render|--steps|1|--method|${method}" 2
+                "-DSTDERR_LINE=rube run: ${over}: method ${method} tests every pair of shapes, and 2100 moving bodies among 2101 shapes make 4412100 pair tests ${unit}, more than the 4194304 it affords: use auto or solver")
+endforeach()
+foreach(method auto solver)
+  rube_cli_test("${method} runs the scene over the pair budget" "run|${over}|--no-render|--steps|2|--method|${method}" 0
+                "-DSTDOUT_MATCH=steps: +2\n")
+endforeach()
+rube_cli_test("exact runs a scene inside its pair budget" "run|${RUBE_LEVELS}/pool-break.toml|--no-render|--steps|2|--method|exact" 0
+              "-DSTDOUT_MATCH=steps: +2\n")

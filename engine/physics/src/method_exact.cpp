@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <limits>
 #include <tuple>
+#include <unordered_map>
 #include <vector>
 
 namespace rube {
@@ -26,8 +27,8 @@ namespace {
 constexpr int kSettlePasses = 16;
 constexpr double kSettledDepth = 1e-12;
 
-// What pairs_ holds per pair: searched, or resting for the rest of the step (and, for a
-// segment, on which side of its line the circle rests).
+// A pair's state: searched, or resting for the rest of the step (and, for a segment, on which
+// side of its line the circle rests). Only resting pairs are stored (resting_).
 enum PairState : std::uint8_t { kSearched = 0, kRestingPlus = 1, kRestingMinus = 2 };
 
 // The earliest impact found so far, and which pair it belongs to.
@@ -58,7 +59,10 @@ public:
     void step(StepContext& ctx, double dt) override {
         circleCount_ = static_cast<int>(ctx.circles.size());
         columns_ = circleCount_ + static_cast<int>(ctx.segments.size());
-        pairs_.assign(static_cast<std::size_t>(circleCount_) * static_cast<std::size_t>(columns_), kSearched);
+        // Memory O(n + resting pairs): a table of every pair's state was n x (n + segments) bytes,
+        // 10 GB for 100,000 circles, and clearing it cost O(n^2) every step.
+        resting_.clear();
+        restingPairsOf_.assign(ctx.circles.size(), 0);
         blockResting_.clear();
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
@@ -108,7 +112,20 @@ private:
         if (kind != Other::circle) return pairIndex(circle, circleCount_ + other);
         return pairIndex(std::min(circle, other), std::max(circle, other));
     }
-    bool resting(int circle, Other kind, int other) const { return pairs_[pairIndex(circle, kind, other)] != kSearched; }
+    // Whether the pair rests for the rest of the step; a circle in no resting pair costs no lookup.
+    bool resting(int circle, Other kind, int other) const { return pairState(circle, kind, other) != kSearched; }
+    std::uint8_t pairState(int circle, Other kind, int other) const {
+        if (restingPairsOf_[static_cast<std::size_t>(circle)] == 0) return kSearched;
+        const auto found = resting_.find(pairIndex(circle, kind, other));
+        return found == resting_.end() ? std::uint8_t{kSearched} : found->second;
+    }
+    void setResting(int circle, Other kind, int other, std::uint8_t state) {
+        const auto [entry, added] = resting_.try_emplace(pairIndex(circle, kind, other), state);
+        entry->second = state;
+        if (!added) return;
+        ++restingPairsOf_[static_cast<std::size_t>(circle)];
+        if (kind == Other::circle) ++restingPairsOf_[static_cast<std::size_t>(other)];
+    }
 
     // The earliest time of impact over all pairs within the horizon, in index order on ties.
     Candidate earliestCollision(const StepContext& ctx, double horizon) const {
@@ -209,7 +226,7 @@ private:
                 const Segment& s = ctx.segments[hit.other];
                 if ((s.b - s.a).normal().dot(hit.normal) < 0.0) state = kRestingMinus;
             }
-            pairs_[pairIndex(hit.circle, hit.kind, hit.other)] = state;
+            setResting(hit.circle, hit.kind, hit.other, state);
         } else {
             // A real impact may drive a body into what it rests on: search those pairs again.
             searchAgain(hit.circle);
@@ -218,8 +235,21 @@ private:
     }
 
     void searchAgain(int circle) {
-        for (int k = 0; k < columns_; ++k) pairs_[pairIndex(circle, k)] = kSearched;
-        for (int i = 0; i < circle; ++i) pairs_[pairIndex(i, circle)] = kSearched;
+        // Every resting pair with this circle, in its row (a segment, a higher circle) or its column.
+        if (restingPairsOf_[static_cast<std::size_t>(circle)] != 0) {
+            const std::size_t columns = static_cast<std::size_t>(columns_);
+            for (auto entry = resting_.begin(); entry != resting_.end();) {
+                const std::size_t row = entry->first / columns, column = entry->first % columns;
+                const bool circleColumn = column < static_cast<std::size_t>(circleCount_);
+                if (row != static_cast<std::size_t>(circle) && !(circleColumn && column == static_cast<std::size_t>(circle))) {
+                    ++entry;
+                    continue;
+                }
+                --restingPairsOf_[row];
+                if (circleColumn) --restingPairsOf_[column];
+                entry = resting_.erase(entry);
+            }
+        }
         if (!blockResting_.empty()) forgetResting(Other::circle, circle);
     }
 
@@ -280,7 +310,7 @@ private:
             for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
                 const Segment& s = ctx.segments[k];
                 // A resting circle keeps the side it came from, even if its centre sank past the line.
-                const std::uint8_t state = pairs_[pairIndex(i, Other::segment, k)];
+                const std::uint8_t state = pairState(i, Other::segment, k);
                 const Vec2 lineNormal = (s.b - s.a).normal();
                 const Vec2 side = state == kRestingPlus    ? lineNormal
                                   : state == kRestingMinus ? -lineNormal
@@ -372,7 +402,8 @@ private:
 
     int circleCount_ = 0;
     int columns_ = 0;
-    std::vector<std::uint8_t> pairs_; ///< PairState per pair: circles x (circles + segments)
+    std::unordered_map<std::size_t, std::uint8_t> resting_; ///< pairIndex -> PairState, resting pairs only
+    std::vector<int> restingPairsOf_; ///< per circle: how many of resting_'s pairs it is in
     std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
     std::vector<int> levels_;         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit

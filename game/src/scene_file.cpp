@@ -1,6 +1,7 @@
 // Scene files: the top level, [world], [view] and [[path]]; the bodies are read in scene_bodies.cpp.
 #include "scene_file.hpp"
 
+#include "method_budget.hpp"
 #include "scene_reading.hpp"
 
 #include <algorithm>
@@ -233,6 +234,9 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     }
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     if ((scene.level.isLevel() || rotating) && !namesMethod) scene.world.method = Method::automatic;
+    // Nor does a scene too large for exact's pair-by-pair search (method_budget.hpp): it gets
+    // "auto", which runs exact wherever exact affords the step.
+    if (!namesMethod && !methodBudgetRefusal(scene, scene.world.method).empty()) scene.world.method = Method::automatic;
     return {std::move(scene), {}};
 }
 

@@ -177,5 +177,11 @@ foreach(method auto solver)
   rube_cli_test("${method} runs the scene over the pair budget" "run|${over}|--no-render|--steps|2|--method|${method}" 0
                 "-DSTDOUT_MATCH=steps: +2\n")
 endforeach()
+# A physics scene that names no method keeps exact while exact affords it, else gets auto.
+file(READ ${over} over_text)
+string(REPLACE "method = \"exact\"\n" "" over_text "${over_text}")
+file(WRITE ${RUBE_CLI_OUT}/pairs-over-budget-unnamed.toml "${over_text}")
+rube_cli_test("a scene naming no method over the pair budget runs under auto"
+              "run|${RUBE_CLI_OUT}/pairs-over-budget-unnamed.toml|--no-render|--steps|2" 0 "-DSTDOUT_MATCH=method: +auto")
 rube_cli_test("exact runs a scene inside its pair budget" "run|${RUBE_LEVELS}/pool-break.toml|--no-render|--steps|2|--method|exact" 0
               "-DSTDOUT_MATCH=steps: +2\n")

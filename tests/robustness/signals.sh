@@ -2,6 +2,7 @@
 # SIGINT and SIGTERM stop scene runs and level runs alike (issue 27): one line on stderr naming
 # the signal, exit status 1, no temporary left (the trace's t.csv.tmp-PID, summary.json.tmp), and
 # the summary saying the run was interrupted (stdout; summary.json for a level run with --out).
+# After a SIGKILL, the next run writing the same trace removes the dead run's temporary.
 #
 # usage: signals.sh RUBE SCENE LEVEL WORK_DIR   (SCENE and LEVEL must run for minutes uninterrupted)
 set -uo pipefail
@@ -47,6 +48,21 @@ for signal in INT TERM; do
     fail "level-$signal: summary.json does not say SIG$signal interrupted it"
   [ ! -e "$out/summary.json.tmp" ] || fail "level-$signal: summary.json.tmp was left"
 done
+
+# SIGKILL cannot be caught: the killed run's t.csv.tmp-PID stays, and the next run writing the same
+# trace removes it (its process is gone) before writing its own.
+trace="$work/scene-KILL.csv"
+"$rube" run "$scene" --no-render --steps 100000000 --trace "$trace" >/dev/null 2>&1 &
+pid=$!
+sleep 1
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+[ -e "$trace.tmp-$pid" ] || fail "scene-KILL: the SIGKILLed run left no $trace.tmp-$pid to clean up"
+"$rube" run "$scene" --no-render --steps 2 --trace "$trace" >/dev/null 2>"$work/after-kill.err" ||
+  fail "scene-KILL: the run after the SIGKILL failed: $(cat "$work/after-kill.err")"
+left=$(find "$work" -maxdepth 1 -name "scene-KILL.csv.tmp-*" | wc -l)
+[ "$left" -eq 0 ] && [ -f "$trace" ] || fail "scene-KILL: the next run left $left temporaries (or no trace)"
+[ "$left" -eq 0 ] && echo "signals: scene-KILL: the next run removed the killed run's $trace.tmp-$pid"
 
 [ "$failures" -eq 0 ] || exit 1
 echo "signals: SIGINT and SIGTERM stop scenes and levels alike"

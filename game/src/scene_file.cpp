@@ -232,6 +232,11 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
         worldTable.error(worldTable.valuePlace("method"), "method '" + std::string(methodName(scene.world.method)) +
                                                               "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
     }
+    // Naming a method too slow for the scene's size is an error at the name (method_budget.hpp).
+    if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : ""; !why.empty() && diag.empty()) {
+        TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
+        worldTable.error(worldTable.valuePlace("method"), why);
+    }
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     if ((scene.level.isLevel() || rotating) && !namesMethod) scene.world.method = Method::automatic;
     // Nor does a scene too large for exact's pair-by-pair search (method_budget.hpp): it gets

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <limits>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
 namespace rube {
@@ -28,7 +27,7 @@ constexpr int kSettlePasses = 16;
 constexpr double kSettledDepth = 1e-12;
 
 // A pair's state: searched, or resting for the rest of the step (and, for a segment, on which
-// side of its line the circle rests). Only resting pairs are stored (resting_).
+// side of its line the circle rests). Only resting pairs are stored (restingOf_).
 enum PairState : std::uint8_t { kSearched = 0, kRestingPlus = 1, kRestingMinus = 2 };
 
 // The earliest impact found so far, and which pair it belongs to.
@@ -39,6 +38,13 @@ struct Candidate {
     int other = -1;
     Vec2 normal;
     BlockEvent block; ///< a block's impact instead, when block.block >= 0 (lecture 3's blocks)
+};
+
+// A pair resting for the rest of the step, in one circle's list: the other circle's index, or
+// circleCount_ + a segment's; and its PairState.
+struct RestingPair {
+    int column = 0;
+    std::uint8_t state = kSearched;
 };
 
 // A pair touching (or nearly) at the end of a step, to be settled; `side` is a segment face's side.
@@ -58,11 +64,10 @@ class ExactMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
         circleCount_ = static_cast<int>(ctx.circles.size());
-        columns_ = circleCount_ + static_cast<int>(ctx.segments.size());
         // Memory O(n + resting pairs): a table of every pair's state was n x (n + segments) bytes,
         // 10 GB for 100,000 circles, and clearing it cost O(n^2) every step.
-        resting_.clear();
-        restingPairsOf_.assign(ctx.circles.size(), 0);
+        restingOf_.resize(ctx.circles.size());
+        for (std::vector<RestingPair>& list : restingOf_) list.clear(); // capacity kept: no allocation once grown
         blockResting_.clear();
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
@@ -104,27 +109,27 @@ public:
     }
 
 private:
-    std::size_t pairIndex(int circle, int column) const {
-        return static_cast<std::size_t>(circle) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
-    }
-    // Columns: circles first, then segments; a pair of circles is stored under its lower index.
-    std::size_t pairIndex(int circle, Other kind, int other) const {
-        if (kind != Other::circle) return pairIndex(circle, circleCount_ + other);
-        return pairIndex(std::min(circle, other), std::max(circle, other));
-    }
-    // Whether the pair rests for the rest of the step; a circle in no resting pair costs no lookup.
+    // Whether the pair rests for the rest of the step.
     bool resting(int circle, Other kind, int other) const { return pairState(circle, kind, other) != kSearched; }
+    // A pair's column in a circle's list: the other circle's index, or circleCount_ + a segment's.
+    int columnOf(Other kind, int other) const { return kind == Other::circle ? other : circleCount_ + other; }
     std::uint8_t pairState(int circle, Other kind, int other) const {
-        if (restingPairsOf_[static_cast<std::size_t>(circle)] == 0) return kSearched;
-        const auto found = resting_.find(pairIndex(circle, kind, other));
-        return found == resting_.end() ? std::uint8_t{kSearched} : found->second;
+        // A circle rests on a handful of others at most: a short scan beats hashing.
+        const int column = columnOf(kind, other);
+        for (const RestingPair& pair : restingOf_[static_cast<std::size_t>(circle)])
+            if (pair.column == column) return pair.state;
+        return kSearched;
     }
+    // Records the pair in the circle's list and, for two circles, in the other's too.
     void setResting(int circle, Other kind, int other, std::uint8_t state) {
-        const auto [entry, added] = resting_.try_emplace(pairIndex(circle, kind, other), state);
-        entry->second = state;
-        if (!added) return;
-        ++restingPairsOf_[static_cast<std::size_t>(circle)];
-        if (kind == Other::circle) ++restingPairsOf_[static_cast<std::size_t>(other)];
+        const auto mark = [&](int owner, int column) {
+            std::vector<RestingPair>& list = restingOf_[static_cast<std::size_t>(owner)];
+            for (RestingPair& pair : list)
+                if (pair.column == column) return void(pair.state = state);
+            list.push_back(RestingPair{column, state});
+        };
+        mark(circle, columnOf(kind, other));
+        if (kind == Other::circle) mark(other, circle);
     }
 
     // The earliest time of impact over all pairs within the horizon, in index order on ties.
@@ -235,21 +240,13 @@ private:
     }
 
     void searchAgain(int circle) {
-        // Every resting pair with this circle, in its row (a segment, a higher circle) or its column.
-        if (restingPairsOf_[static_cast<std::size_t>(circle)] != 0) {
-            const std::size_t columns = static_cast<std::size_t>(columns_);
-            for (auto entry = resting_.begin(); entry != resting_.end();) {
-                const std::size_t row = entry->first / columns, column = entry->first % columns;
-                const bool circleColumn = column < static_cast<std::size_t>(circleCount_);
-                if (row != static_cast<std::size_t>(circle) && !(circleColumn && column == static_cast<std::size_t>(circle))) {
-                    ++entry;
-                    continue;
-                }
-                --restingPairsOf_[row];
-                if (circleColumn) --restingPairsOf_[column];
-                entry = resting_.erase(entry);
-            }
-        }
+        // Every resting pair with this circle: its own list, and its entry in each resting partner's.
+        std::vector<RestingPair>& list = restingOf_[static_cast<std::size_t>(circle)];
+        for (const RestingPair& pair : list)
+            if (pair.column < circleCount_)
+                std::erase_if(restingOf_[static_cast<std::size_t>(pair.column)],
+                              [&](const RestingPair& back) { return back.column == circle; });
+        list.clear();
         if (!blockResting_.empty()) forgetResting(Other::circle, circle);
     }
 
@@ -401,9 +398,7 @@ private:
     }
 
     int circleCount_ = 0;
-    int columns_ = 0;
-    std::unordered_map<std::size_t, std::uint8_t> resting_; ///< pairIndex -> PairState, resting pairs only
-    std::vector<int> restingPairsOf_; ///< per circle: how many of resting_'s pairs it is in
+    std::vector<std::vector<RestingPair>> restingOf_; ///< per circle: the pairs it rests in for the rest of the step
     std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
     std::vector<int> levels_;         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit

@@ -62,6 +62,9 @@ FrameRecorder::FrameRecorder(const std::filesystem::path& folder, render::FrameS
     std::error_code error;
     std::filesystem::create_directories(folder, error);
     if (error) throw OutputFolderError("cannot write frames to " + folder.string() + ": " + error.message());
+    // Before anything in the folder is touched: two runs into one folder would mix their frames.
+    lock_ = std::make_unique<OutFolderLock>(folder);
+    if (!lock_->locked()) throw OutputFolderError(lock_->why());
     try {
         writer_ = std::make_unique<render::FrameWriter>(folder, kQueueDepth);
     } catch (const std::exception& e) {
@@ -70,6 +73,9 @@ FrameRecorder::FrameRecorder(const std::filesystem::path& folder, render::FrameS
     context_ = render::createOffscreenContext(size);
     renderer_ = std::make_unique<render::Renderer>(*context_);
     staleFramesRemoved_ = removeFrames(folder);
+    // An earlier level run's summary would otherwise sit beside these frames until this run's
+    // replaced it, and for good if this run fails before writing its own.
+    std::filesystem::remove(folder / "summary.json", error);
 }
 
 FrameRecorder::~FrameRecorder() = default;

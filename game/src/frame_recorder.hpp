@@ -2,6 +2,8 @@
 /// FrameRecorder: renders draw lists offscreen and writes them as numbered PNG frames, the PNG
 /// encoding running on the writer's thread while the caller simulates and draws the next frame.
 
+#include "out_folder_lock.hpp"
+
 #include "rube/render/camera.hpp"
 #include "rube/render/draw_list.hpp"
 #include "rube/render/frame_writer.hpp"
@@ -50,8 +52,9 @@ struct RecordingStats {
 /// context is made (std::runtime_error), so a bad --out costs no GL start-up and writes nothing.
 class FrameRecorder {
 public:
-    /// Frames of `size` into `folder`, created if missing; the frames of an earlier run in it
-    /// are removed once the folder and the GL context are known to work.
+    /// Frames of `size` into `folder`, created if missing and locked for this run's life
+    /// (OutputFolderError when another run holds it); the frames and summary.json of an earlier
+    /// run in it are removed once the folder and the GL context are known to work.
     FrameRecorder(const std::filesystem::path& folder, render::FrameSize size);
     /// Writes the frames still queued (errors then are lost: call finish() to see them).
     ~FrameRecorder();
@@ -73,6 +76,7 @@ public:
 
 private:
     std::chrono::steady_clock::time_point start_;
+    std::unique_ptr<OutFolderLock> lock_; ///< taken first and released last: the folder is this run's
     // Declared in this order so the writer is made (checking the folder) before GL starts, and
     // the renderer is destroyed before its context and the writer drains last.
     std::unique_ptr<render::FrameWriter> writer_;

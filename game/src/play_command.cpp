@@ -4,6 +4,7 @@
 
 #include "frame_recorder.hpp"
 #include "level_view.hpp"
+#include "run_interrupt.hpp"
 #include "scene_errors.hpp"
 #include "scene_framing.hpp"
 #include "script_file.hpp"
@@ -46,10 +47,13 @@ std::string jsonNumber(double value) {
     return text;
 }
 
-// The summary: every event with its frame, time and position, and how each expectation fared.
-std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::vector<std::pair<std::string, bool>>& expectations) {
+// The summary: every event with its frame, time and position, and how each expectation fared;
+// whether a signal cut the run short (`signal` empty when none did).
+std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::vector<std::pair<std::string, bool>>& expectations,
+                        const std::string& signal) {
     std::ostringstream json;
     json << "{\n  \"level\": " << jsonString(level.name) << ",\n  \"steps\": " << run.frame()
+         << ",\n  \"interrupted\": " << (signal.empty() ? "false" : "true,\n  \"signal\": " + jsonString(signal))
          << ",\n  \"goal_reached\": " << (run.goalFrame() ? "true" : "false")
          << ",\n  \"goal_frame\": " << (run.goalFrame() ? std::to_string(*run.goalFrame()) : "null")
          << ",\n  \"speed_clamps\": " << run.world().stats().speedClamps << ",\n  \"isolated_bodies\": " << run.world().stats().isolatedBodies
@@ -136,6 +140,7 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
 
     std::vector<std::string> failures;
     std::size_t next = 0;
+    InterruptGuard guard;
     const std::int64_t tail = static_cast<std::int64_t>(std::ceil(kAfterGoalSeconds / dt));
     try {
         for (std::int64_t i = 0;; ++i) {
@@ -144,7 +149,7 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
                     failures.push_back(options.script + ":" + std::to_string(script.actions[next].place.line) + ":" +
                                        std::to_string(script.actions[next].place.column) + ": at frame " + std::to_string(i) + ": " + why);
             if (i % every == 0) record();
-            if (i >= steps || (run.goalFrame() && i >= *run.goalFrame() + tail)) break;
+            if (i >= steps || (run.goalFrame() && i >= *run.goalFrame() + tail) || interrupted()) break;
             run.step();
         }
         if (recorder) recorder->finish();
@@ -160,8 +165,11 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
             failures.push_back(options.script + ":" + std::to_string(e.place.line) + ":" + std::to_string(e.place.column) +
                                ": expectation failed: " + e.describe());
     }
-    if (!options.out.empty() && !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged))) {
-        err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << '\n';
+    const std::string signal = interruptingSignal();
+    std::string reason;
+    if (!options.out.empty() &&
+        !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged, signal), reason)) {
+        err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << ": " << reason << '\n';
         return 1;
     }
     out << "level:            " << level.name << '\n';
@@ -173,6 +181,13 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
     if (recorder) out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
+    if (!signal.empty()) {
+        // One line, not the expectations the cut-short run could not meet.
+        out << "interrupted:      by " << signal << " at frame " << run.frame() << '\n';
+        err << "rube run: interrupted by " << signal << " at frame " << run.frame()
+            << (recorder ? "; " + std::to_string(framesWritten) + " frames written" : std::string()) << '\n';
+        return 1;
+    }
     for (const std::string& failure : failures) err << failure << '\n';
     if (!run.goalFrame() && level.level.goal) err << "rube run: goal not reached: " << level.level.goal->text << '\n';
     // Issue 27: levels as scenes, a run whose physics went non-finite fails (it was silent).

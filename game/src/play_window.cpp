@@ -130,8 +130,8 @@ int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& er
         out << "goal:             " << (run->goalFrame() ? "reached at frame " + std::to_string(*run->goalFrame()) : std::string("not reached")) << '\n';
     }
     if (!options.record.empty()) {
-        if (!writeTextFileAtomically(options.record, session.recordedScript())) {
-            err << "rube play: cannot write " << options.record << '\n';
+        if (std::string reason; !writeTextFileAtomically(options.record, session.recordedScript(), reason)) {
+            err << "rube play: cannot write " << options.record << ": " << reason << '\n';
             return 1;
         }
         out << "recorded:         " << options.record << " (replay: rube run " << options.level << " --script " << options.record

@@ -4,7 +4,9 @@
 #include "scene_reading.hpp"
 
 #include "frame_recorder.hpp"
+#include "method_budget.hpp"
 #include "play_command.hpp"
+#include "run_interrupt.hpp"
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
 #include "scene_reading.hpp"
@@ -12,7 +14,6 @@
 #include "trace_writer.hpp"
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -21,22 +22,6 @@
 namespace rube::game {
 
 namespace {
-
-// Set by Ctrl-C; the step loop stops at the next step and the trace is discarded, never half-written.
-volatile std::sig_atomic_t gInterrupted = 0;
-extern "C" void onInterrupt(int) { gInterrupted = 1; }
-
-// Installs the Ctrl-C handler for the length of a run and puts the previous one back afterwards.
-class InterruptGuard {
-public:
-    InterruptGuard() : previous_(std::signal(SIGINT, onInterrupt)) { gInterrupted = 0; }
-    ~InterruptGuard() { std::signal(SIGINT, previous_); }
-    InterruptGuard(const InterruptGuard&) = delete;
-    InterruptGuard& operator=(const InterruptGuard&) = delete;
-
-private:
-    void (*previous_)(int);
-};
 
 std::string validMethodNames() {
     std::string names;
@@ -139,6 +124,10 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
             << options.scene << ": use auto or solver\n";
         return 2;
     }
+    if (const std::string why = methodBudgetRefusal(scene, method.value_or(scene.world.method)); !why.empty()) {
+        err << "rube run: " << options.scene << ": " << why << '\n';
+        return 2;
+    }
     // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
     if (scene.level.isLevel() || !options.script.empty()) return playLevel(options, scene, out, err);
     // --steps is capped by its validator and a scene's duration when read; only --frames x --every is left.
@@ -151,6 +140,7 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     if (!recording && !options.noRender)
         err << "rube run: note: no frames written without --out DIR (--no-render runs headless without this note)\n";
 
+    InterruptGuard guard; // from before the trace's temporary exists, so a SIGTERM cannot leave it behind
     TraceWriter trace;
     std::string error;
     if (!options.trace.empty() && !trace.open(options.trace, error)) {
@@ -184,14 +174,13 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         progress->update(frames.done, frames.recorder->elapsedSeconds());
     };
 
-    InterruptGuard guard;
     trace.writeState(world); // step 0: the initial state
     // The wall clock lives outside the simulation: it measures, and never feeds back into, the physics.
     std::chrono::steady_clock::duration physicsTime{};
     RecordingStats recorded;
     try {
         if (recording) recordFrame(); // frame 0: the initial state
-        for (std::int64_t i = 0; i < steps && !gInterrupted; ++i) {
+        for (std::int64_t i = 0; i < steps && !interrupted(); ++i) {
             const auto start = std::chrono::steady_clock::now();
             world.step();
             physicsTime += std::chrono::steady_clock::now() - start;
@@ -209,9 +198,14 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return 1;
     }
     progress.reset(); // wipes the progress line before anything else is printed
-    if (gInterrupted) {
+    if (interrupted()) {
         trace.discard();
-        err << "rube run: interrupted after " << world.stats().steps << " steps; no trace written";
+        RunOptions shown = options;
+        shown.trace.clear(); // the summary must not name a trace that was discarded
+        printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), shown, trace,
+                     recording ? &recorded : nullptr);
+        out << "interrupted:      by " << interruptingSignal() << " after " << world.stats().steps << " steps\n";
+        err << "rube run: interrupted by " << interruptingSignal() << " after " << world.stats().steps << " steps; no trace written";
         // The frames already written stay: each is whole (written under a temporary name, then renamed).
         if (recording) err << "; " << recorded.frames << " frames written";
         err << '\n';

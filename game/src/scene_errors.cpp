@@ -5,8 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
-#include <fstream>
-#include <sstream>
 
 namespace rube::game {
 
@@ -99,41 +97,6 @@ std::string formatPair(double x, double y) {
     std::string result = "[";
     result.append(formatNumber(x)).append(", ").append(formatNumber(y)).append("]");
     return result;
-}
-
-std::optional<std::string> readTextFile(const std::filesystem::path& file, SceneError& error) {
-    error = SceneError{file.string(), {}, ""};
-    std::error_code ec;
-    // An ifstream opens a directory without complaint on Linux; only reading it fails.
-    std::ifstream in(file, std::ios::binary);
-    if (!in || std::filesystem::is_directory(file, ec)) {
-        error.message = "cannot open file";
-        return std::nullopt;
-    }
-    // Scenes, levels and scripts are written by hand: a file this big is a mistake (or not a
-    // scene at all), and reading it whole would only waste memory before failing anyway.
-    if (const auto size = std::filesystem::file_size(file, ec); !ec && size > kMaxTextFileBytes) {
-        error.message = "file too large: " + std::to_string(size) + " bytes, at most " + std::to_string(kMaxTextFileBytes) + " (4 MiB)";
-        return std::nullopt;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) {
-        error.message = "cannot read file";
-        return std::nullopt;
-    }
-    return std::move(text).str();
-}
-
-bool writeTextFileAtomically(const std::filesystem::path& file, const std::string& text) {
-    const std::filesystem::path temporary = file.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!(out << text) || !out.flush()) return false;
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, file, ec);
-    return !ec;
 }
 
 } // namespace rube::game

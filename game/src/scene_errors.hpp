@@ -69,12 +69,14 @@ std::string formatPair(double x, double y);
 inline constexpr std::uintmax_t kMaxTextFileBytes = 4u << 20;
 
 /// The whole text of a file, or nothing with `error` set to "cannot open file" (also for a
-/// folder), "file too large: ..." (over kMaxTextFileBytes) or "cannot read file", so every
-/// loader words an unreadable file the same way.
+/// folder), "not a regular file" (a FIFO, a device: refused before any read, so none can block
+/// or run on for ever), "file too large: ..." (over kMaxTextFileBytes, however the bytes come) or
+/// "cannot read file", so every loader words an unreadable file the same way (text_file_io.cpp).
 std::optional<std::string> readTextFile(const std::filesystem::path& file, SceneError& error);
 
 /// Writes `text` to `file` under a temporary name and renames it, so a reader (or an interrupted
-/// run) never sees half a file; false when it could not be written.
-bool writeTextFileAtomically(const std::filesystem::path& file, const std::string& text);
+/// run) never sees half a file; false when it could not be written, with `reason` set (the
+/// system's words, e.g. "No space left on device") and no temporary left behind.
+bool writeTextFileAtomically(const std::filesystem::path& file, const std::string& text, std::string& reason);
 
 } // namespace rube::game

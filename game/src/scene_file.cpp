@@ -1,6 +1,7 @@
 // Scene files: the top level, [world], [view] and [[path]]; the bodies are read in scene_bodies.cpp.
 #include "scene_file.hpp"
 
+#include "method_budget.hpp"
 #include "scene_reading.hpp"
 
 #include <algorithm>
@@ -231,8 +232,16 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
         worldTable.error(worldTable.valuePlace("method"), "method '" + std::string(methodName(scene.world.method)) +
                                                               "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
     }
+    // Naming a method too slow for the scene's size is an error at the name (method_budget.hpp).
+    if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : ""; !why.empty() && diag.empty()) {
+        TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
+        worldTable.error(worldTable.valuePlace("method"), why);
+    }
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     if ((scene.level.isLevel() || rotating) && !namesMethod) scene.world.method = Method::automatic;
+    // Nor does a scene too large for exact's pair-by-pair search (method_budget.hpp): it gets
+    // "auto", which runs exact wherever exact affords the step.
+    if (!namesMethod && !methodBudgetRefusal(scene, scene.world.method).empty()) scene.world.method = Method::automatic;
     return {std::move(scene), {}};
 }
 

@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <signal.h>
 #include <unistd.h>
 
 namespace rube::game {
@@ -10,6 +11,23 @@ namespace rube::game {
 namespace {
 
 std::string describeErrno(int error) { return std::strerror(error); }
+
+// Removes TARGET.tmp-PID files whose process is gone: a run killed with SIGKILL (or a crash)
+// cannot remove its own temporary. A live process's, another run writing the same trace, stays.
+void removeOrphanedTemporaries(const std::filesystem::path& target) {
+    const std::string prefix = target.filename().string() + ".tmp-";
+    std::filesystem::path folder = target.parent_path();
+    if (folder.empty()) folder = ".";
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (!name.starts_with(prefix) || name.size() == prefix.size()) continue;
+        const std::string digits = name.substr(prefix.size());
+        if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(digits));
+        if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), ec);
+    }
+}
 
 } // namespace
 
@@ -21,6 +39,7 @@ bool TraceWriter::open(const std::filesystem::path& target, std::string& error) 
         error = target.string() + ": cannot write trace: it is a directory";
         return false;
     }
+    removeOrphanedTemporaries(target);
     target_ = target;
     // Same folder as the target, so the final rename stays on one file system and is atomic;
     // the process id keeps two runs writing the same trace from sharing a temporary file.

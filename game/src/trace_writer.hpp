@@ -28,6 +28,7 @@ public:
     TraceWriter& operator=(const TraceWriter&) = delete;
 
     /// Creates the temporary file and writes the header; false, with `error` set, when it cannot.
+    /// First removes the temporaries of this target left by runs whose process is gone (SIGKILL).
     bool open(const std::filesystem::path& target, std::string& error);
     /// Appends one row per dynamic circle in the world's current state.
     void writeState(const World& world);

@@ -156,3 +156,33 @@ rube_play_test("a bad --script is reported at its place" "${RUBE_GAME_LEVELS}/ca
                "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
 rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit-after|0" 2
                "-DSTDERR_LINE=rube: --quit-after: expected a whole number of frames from 1 to 1000000000, got '0' (see 'rube play --help')")
+
+# Methods without a broadphase (discrete, turn-based, exact) refuse a scene whose pair tests exceed
+# 2^22 (issue 27: 100,000 circles under exact took 10 GB and minutes a step): status 2, one line
+# naming the methods that scale; in the file at the method's name, on the command line as --method.
+# The same scene naming no method runs under auto, and under --method auto or solver.
+set(over ${RUBE_CLI_DIR}/pairs-over-budget.toml)
+set(over_exact "method exact tests every pair of shapes, and 2100 moving bodies among 2101 shapes make 4412100 pair tests a search, more than the 4194304 it affords: use auto or solver")
+rube_cli_test("exact refuses a scene over its pair budget" "run|${over}|--no-render|--steps|1|--trace|${RUBE_CLI_OUT}/over.csv" 2
+              -DTRACE=${RUBE_CLI_OUT}/over.csv -DNO_TRACE=ON "-DSTDERR_LINE=${over}:5:10: ${over_exact}")
+rube_cli_test("check names the method over its pair budget" "check|${over}" 2 "-DSTDERR_LINE=${over}:5:10: ${over_exact}")
+file(READ ${over} over_text)
+string(REPLACE "method = \"exact\"\n" "" over_text "${over_text}")
+set(unnamed ${RUBE_CLI_OUT}/pairs-over-budget-unnamed.toml)
+file(WRITE ${unnamed} "${over_text}")
+rube_cli_test("a scene naming no method over the pair budget runs under auto" "run|${unnamed}|--no-render|--steps|2" 0
+              "-DSTDOUT_MATCH=method: +auto")
+foreach(method discrete turn-based exact)
+  set(unit "a search")
+  if(method STREQUAL "discrete")
+    set(unit "a step")
+  endif()
+  rube_cli_test("--method ${method} refuses a scene over its pair budget" "run|${unnamed}|--no-render|--steps|1|--method|${method}" 2
+                "-DSTDERR_LINE=rube run: ${unnamed}: method ${method} tests every pair of shapes, and 2100 moving bodies among 2101 shapes make 4412100 pair tests ${unit}, more than the 4194304 it affords: use auto or solver")
+endforeach()
+foreach(method auto solver)
+  rube_cli_test("--method ${method} runs the scene over the pair budget" "run|${unnamed}|--no-render|--steps|2|--method|${method}" 0
+                "-DSTDOUT_MATCH=steps: +2\n")
+endforeach()
+rube_cli_test("exact runs a scene inside its pair budget" "run|${RUBE_LEVELS}/pool-break.toml|--no-render|--steps|2|--method|exact" 0
+              "-DSTDOUT_MATCH=steps: +2\n")

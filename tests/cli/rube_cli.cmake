@@ -11,7 +11,8 @@
 #   FRAMES_DIR=<dir>         removed before the run, with everything in it
 #   SEED_FRAMES=<n>          before the run, FRAMES_DIR holds n dummy frames of an earlier run and notes.txt
 #   FRAMES=<n>               afterwards FRAMES_DIR holds frame_00000.png ... frame_<n-1>.png as PNGs,
-#                            no other frame and no temporary (notes.txt survives when seeded)
+#                            no other frame and no temporary (notes.txt survives when seeded), and
+#                            the folder's lock file .rube.lock
 #   NO_FRAMES_DIR=ON         afterwards FRAMES_DIR does not exist
 #   BLOCKER=<file>           a plain file created before the run, to stand where a folder should be
 #   SUMMARY_MATCH=<regex>    afterwards FRAMES_DIR/summary.json exists, matches, and left no temporary
@@ -127,6 +128,8 @@ if(DEFINED FRAMES)
   if(DEFINED SEED_FRAMES)
     list(APPEND expected "notes.txt")
   endif()
+  # The folder's lock (held by flock for a run's life) stays between runs; see out_folder_lock.hpp.
+  list(APPEND expected ".rube.lock")
   list(SORT written)
   list(SORT expected)
   if(NOT written STREQUAL expected)

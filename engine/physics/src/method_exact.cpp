@@ -31,8 +31,8 @@ namespace {
 constexpr int kSettlePasses = 16;
 constexpr double kSettledDepth = 1e-12;
 
-// What pairs_ holds per pair: searched, or resting for the rest of the step (and, for a
-// segment, on which side of its line the circle rests).
+// A pair's state: searched, or resting for the rest of the step (and, for a segment, on which
+// side of its line the circle rests). Only resting pairs are stored (restingOf_).
 enum PairState : std::uint8_t { kSearched = 0, kRestingPlus = 1, kRestingMinus = 2 };
 
 // The earliest impact found so far, and which pair it belongs to.
@@ -56,6 +56,13 @@ struct Held {
 // Two faces hold a circle still when their normals are not parallel (|n1 x n2| above round-off).
 constexpr double kParallelSine = 1e-9;
 
+// A pair resting for the rest of the step, in one circle's list: the other circle's index, or
+// circleCount_ + a segment's; and its PairState.
+struct RestingPair {
+    int column = 0;
+    std::uint8_t state = kSearched;
+};
+
 // A pair touching (or nearly) at the end of a step, to be settled; `side` is a segment face's side.
 struct Contact {
     int circle = -1;
@@ -73,8 +80,10 @@ class ExactMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
         circleCount_ = static_cast<int>(ctx.circles.size());
-        columns_ = circleCount_ + static_cast<int>(ctx.segments.size());
-        pairs_.assign(static_cast<std::size_t>(circleCount_) * static_cast<std::size_t>(columns_), kSearched);
+        // Memory O(n + resting pairs): a table of every pair's state was n x (n + segments) bytes,
+        // 10 GB for 100,000 circles, and clearing it cost O(n^2) every step.
+        restingOf_.resize(ctx.circles.size());
+        for (std::vector<RestingPair>& list : restingOf_) list.clear(); // capacity kept: no allocation once grown
         blockResting_.clear();
         faces_.clear();
         accelerations_.assign(ctx.circles.size(), ctx.def.gravity);
@@ -123,15 +132,28 @@ public:
     }
 
 private:
-    std::size_t pairIndex(int circle, int column) const {
-        return static_cast<std::size_t>(circle) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
+    // Whether the pair rests for the rest of the step.
+    bool resting(int circle, Other kind, int other) const { return pairState(circle, kind, other) != kSearched; }
+    // A pair's column in a circle's list: the other circle's index, or circleCount_ + a segment's.
+    int columnOf(Other kind, int other) const { return kind == Other::circle ? other : circleCount_ + other; }
+    std::uint8_t pairState(int circle, Other kind, int other) const {
+        // A circle rests on a handful of others at most: a short scan beats hashing.
+        const int column = columnOf(kind, other);
+        for (const RestingPair& pair : restingOf_[static_cast<std::size_t>(circle)])
+            if (pair.column == column) return pair.state;
+        return kSearched;
     }
-    // Columns: circles first, then segments; a pair of circles is stored under its lower index.
-    std::size_t pairIndex(int circle, Other kind, int other) const {
-        if (kind != Other::circle) return pairIndex(circle, circleCount_ + other);
-        return pairIndex(std::min(circle, other), std::max(circle, other));
+    // Records the pair in the circle's list and, for two circles, in the other's too.
+    void setResting(int circle, Other kind, int other, std::uint8_t state) {
+        const auto mark = [&](int owner, int column) {
+            std::vector<RestingPair>& list = restingOf_[static_cast<std::size_t>(owner)];
+            for (RestingPair& pair : list)
+                if (pair.column == column) return void(pair.state = state);
+            list.push_back(RestingPair{column, state});
+        };
+        mark(circle, columnOf(kind, other));
+        if (kind == Other::circle) mark(other, circle);
     }
-    bool resting(int circle, Other kind, int other) const { return pairs_[pairIndex(circle, kind, other)] != kSearched; }
 
     // The earliest time of impact over all pairs within the horizon, in index order on ties.
     Candidate earliestCollision(const StepContext& ctx, double horizon) const {
@@ -246,7 +268,7 @@ private:
                 const Segment& s = ctx.segments[hit.other];
                 if ((s.b - s.a).normal().dot(hit.normal) < 0.0) state = kRestingMinus;
             }
-            pairs_[pairIndex(hit.circle, hit.kind, hit.other)] = state;
+            setResting(hit.circle, hit.kind, hit.other, state);
             if (hit.kind == Other::segment && ctx.bodies.empty()) hold(ctx, hit.circle, hit.other, hit.normal);
         } else {
             // A real impact may drive a body into what it rests on: search those pairs again.
@@ -257,8 +279,13 @@ private:
 
     void searchAgain(int circle) {
         if (!faces_.empty()) letGo(circle);
-        for (int k = 0; k < columns_; ++k) pairs_[pairIndex(circle, k)] = kSearched;
-        for (int i = 0; i < circle; ++i) pairs_[pairIndex(i, circle)] = kSearched;
+        // Every resting pair with this circle: its own list, and its entry in each resting partner's.
+        std::vector<RestingPair>& list = restingOf_[static_cast<std::size_t>(circle)];
+        for (const RestingPair& pair : list)
+            if (pair.column < circleCount_)
+                std::erase_if(restingOf_[static_cast<std::size_t>(pair.column)],
+                              [&](const RestingPair& back) { return back.column == circle; });
+        list.clear();
         if (!blockResting_.empty()) forgetResting(Other::circle, circle);
     }
 
@@ -323,7 +350,8 @@ private:
     void release(int f) {
         const Held held = faces_[f];
         faces_.erase(faces_.begin() + f);
-        pairs_[pairIndex(held.circle, Other::segment, held.segment)] = kSearched;
+        const int column = columnOf(Other::segment, held.segment);
+        std::erase_if(restingOf_[static_cast<std::size_t>(held.circle)], [&](const RestingPair& p) { return p.column == column; });
         accelerations_[held.circle] = heldAcceleration(gravity_, held.circle);
     }
 
@@ -390,7 +418,7 @@ private:
             for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
                 const Segment& s = ctx.segments[k];
                 // A resting circle keeps the side it came from, even if its centre sank past the line.
-                const std::uint8_t state = pairs_[pairIndex(i, Other::segment, k)];
+                const std::uint8_t state = pairState(i, Other::segment, k);
                 const Vec2 lineNormal = (s.b - s.a).normal();
                 const Vec2 side = state == kRestingPlus    ? lineNormal
                                   : state == kRestingMinus ? -lineNormal
@@ -481,8 +509,7 @@ private:
     }
 
     int circleCount_ = 0;
-    int columns_ = 0;
-    std::vector<std::uint8_t> pairs_; ///< PairState per pair: circles x (circles + segments)
+    std::vector<std::vector<RestingPair>> restingOf_; ///< per circle: the pairs it rests in for the rest of the step
     std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
     std::vector<int> levels_;         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit

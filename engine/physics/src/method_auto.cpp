@@ -42,6 +42,7 @@ public:
         // Exact moves every body: sleepers (the solver's) wake before it tries.
         if (!solverNow) wakeAll(ctx.circles);
         if (!solverNow && tryExact(ctx, dt, affordable)) {
+            ctx.stats.exactBodySteps += dynamicBodies(ctx);
             usedSolver_ = false;
             stint_ = kFirstStint;
             return;
@@ -57,6 +58,7 @@ public:
         if (!usedSolver_ || !solver_) solver_ = makeSolverMethod();
         usedSolver_ = true;
         ++ctx.stats.autoSolverSteps;
+        ctx.stats.solverBodySteps += dynamicBodies(ctx);
         solver_->step(ctx, dt);
     }
 
@@ -64,6 +66,12 @@ public:
     bool keepsSleep() const override { return true; }
 
 private:
+    static std::int64_t dynamicBodies(const StepContext& ctx) {
+        return static_cast<std::int64_t>(
+            std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion == Motion::dynamic; }) +
+            std::count_if(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
+    }
+
     // How many events exact may resolve this step within the budget: one search is a test of
     // every dynamic circle against every shape.
     static std::int64_t affordableEvents(const StepContext& ctx) {

@@ -77,7 +77,9 @@ struct StepStats {
     std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
     std::int64_t escapes = 0;        ///< circles and rigid bodies that left the bounds (each counted once)
     int maxEventsInStep = 0;
-    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver (the rest went to exact)
+    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver, for some or all bodies (the rest went to exact)
+    std::int64_t exactBodySteps = 0;  ///< auto: dynamic bodies (circles and rigid bodies) moved by exact, summed over steps
+    std::int64_t solverBodySteps = 0; ///< auto: dynamic bodies moved by the solver (asleep ones too), summed over steps
     bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
 };
 

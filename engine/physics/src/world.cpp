@@ -184,7 +184,7 @@ void World::step() {
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
-    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_};
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
     context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && method_->keepsSleep();

@@ -16,14 +16,15 @@
 //      events; fewer than kFewestEvents (a thousand balls allow none) and the solver takes it;
 //   3. the solver, if the island is serving a stint there (below);
 //   4. exact otherwise. All exact islands run together as one exact step (so a scene that is all
-//      exact takes exact's steps bit for bit) under the event cap their union affords, or all go
-//      to the solver when even their union cannot be afforded. A trial that reaches the cap is a
+//      exact takes exact's steps bit for bit) under the event cap their union affords; when even
+//      their union cannot be afforded, the most crowded neighbourhoods go to the solver first. A trial that reaches the cap is a
 //      crowd (a pile, a stack being struck): the state is put back, the island with the most
 //      impacts in the trial goes to the solver for a stint that doubles each time exact fails on
 //      it again (a lasting crowd costs one failed trial per stint, not one per step), and the
 //      others try again once.
-// The solver islands then run together as one solver step. Static segments and non-dynamic
-// circles are shared; rigid bodies, ropes and sleepers stay within their islands. The measure is a
+// The solver islands then run together as one solver step, on the world itself with exact's
+// bodies shown as fixed. Static segments and non-dynamic circles are shared; rigid bodies, ropes
+// and sleepers stay within their islands. The measure is a
 // count of work, never a clock, and islands go in order of their lowest body index, so the choice
 // is the same on every machine.
 #include "auto_islands.hpp"
@@ -95,6 +96,7 @@ private:
             const Island& island = islands[k];
             if (island.needsSolver || (island.dynamicBodies > 0 && inStint(island))) continue;
             onExact_[k] = 1;
+            if (island.dynamicBodies == 0) continue;
             crowdDynamic_[static_cast<std::size_t>(island.neighbourhood)] += island.dynamicBodies;
             crowdNodes_[static_cast<std::size_t>(island.neighbourhood)] += island.count;
         }
@@ -109,9 +111,25 @@ private:
             dynamic += islands[k].dynamicBodies;
             nodes += islands[k].count;
         }
-        if (affordableEvents(dynamic, nodes + shared) < kFewestEvents)
+        if (affordableEvents(dynamic, nodes + shared) >= kFewestEvents) return;
+        // Their union costs too much: the most crowded neighbourhoods go to the solver first (ties:
+        // the lowest), until what is left can be afforded.
+        crowds_.clear();
+        for (std::size_t k = 0; k < islands.size(); ++k)
+            if (onExact_[k] && islands[k].dynamicBodies > 0 &&
+                std::find(crowds_.begin(), crowds_.end(), islands[k].neighbourhood) == crowds_.end())
+                crowds_.push_back(islands[k].neighbourhood);
+        std::sort(crowds_.begin(), crowds_.end(), [&](int x, int y) {
+            const std::int64_t cx = crowdDynamic_[static_cast<std::size_t>(x)], cy = crowdDynamic_[static_cast<std::size_t>(y)];
+            return cx > cy || (cx == cy && x < y);
+        });
+        for (const int crowd : crowds_) {
+            dynamic -= crowdDynamic_[static_cast<std::size_t>(crowd)];
+            nodes -= crowdNodes_[static_cast<std::size_t>(crowd)];
             for (std::size_t k = 0; k < islands.size(); ++k)
-                if (islands[k].dynamicBodies > 0) onExact_[k] = 0;
+                if (islands[k].neighbourhood == crowd && islands[k].dynamicBodies > 0) onExact_[k] = 0;
+            if (affordableEvents(dynamic, nodes + shared) >= kFewestEvents) return;
+        }
     }
 
     // Dynamic bodies in the islands on exact (`exact`) or on the solver.
@@ -195,10 +213,9 @@ private:
         const bool held = ctx.stats.capsHit == statsBefore.capsHit;
         if (held && whole) return -1;
         if (held) {
-            // The solver's islands meet the segments where exact found them; exact's motion of
-            // them is put back after the solver's step (runSolver).
-            exactSubset_.scatter(ctx, true, impactsBefore);
-            exactSubset_.carryAngles(ctx, true, dt);
+            // Exact's results stay in the subset until the solver has stepped (runSolver); the
+            // solver meets the segments where they were at the start of the step.
+            exactSubset_.remapImpacts(ctx, impactsBefore);
             segmentsAfterExact_.assign(ctx.segments.begin(), ctx.segments.end());
             std::copy(segmentsBefore_.begin(), segmentsBefore_.end(), ctx.segments.begin());
             return -1;
@@ -236,38 +253,42 @@ private:
         return best;
     }
 
-    // Runs the solver on the islands not on exact: the whole world when exact moved nothing.
+    // Runs the solver on the islands not on exact. It always steps the world itself, so its
+    // warm-start cache and sleeping islands keep naming bodies by their world index from step to
+    // step whichever islands exact takes: exact's bodies are shown to it as fixed where they
+    // started (none is within reach of a solver island this step), then given exact's results.
     void runSolver(StepContext& ctx, double dt, bool exactOnSubset, bool ranSolverBefore) {
         if (allOnExact()) return;
-        const bool whole = dynamicBodiesOn(true) == 0;
-        solverMembers_.clear();
-        if (whole) {
-            for (std::size_t i = 0; i < ctx.circles.size(); ++i) solverMembers_.push_back(static_cast<int>(i));
-            solverMembers_.push_back(-1);
-            for (std::size_t b = 0; b < ctx.bodies.size(); ++b) solverMembers_.push_back(static_cast<int>(b));
-        } else {
-            markChosen(stintLeft_.size(), false);
-            solverSubset_.gather(ctx, chosen_);
-            solverMembers_.assign(solverSubset_.circleIndices().begin(), solverSubset_.circleIndices().end());
-            solverMembers_.push_back(-1);
-            solverMembers_.insert(solverMembers_.end(), solverSubset_.bodyIndices().begin(), solverSubset_.bodyIndices().end());
-        }
-        // A solver that sat out some steps, or is given other bodies, starts afresh: its warm-start
-        // impulses belong to contacts that have since moved, or to bodies its indices no longer name.
-        if (!ranSolverBefore || !solver_ || solverMembers_ != lastSolverMembers_) solver_ = makeSolverMethod();
-        lastSolverMembers_.swap(solverMembers_);
+        // A solver that sat out some steps starts afresh: its warm-start impulses belong to
+        // contacts that have since moved.
+        if (!ranSolverBefore || !solver_) solver_ = makeSolverMethod();
         usedSolver_ = true;
         ++ctx.stats.autoSolverSteps;
         ctx.stats.solverBodySteps += dynamicBodiesOn(false);
-        if (whole) {
+        if (!exactOnSubset) {
             solver_->step(ctx, dt);
             return;
         }
-        const std::size_t impactsBefore = ctx.impacts.size();
-        StepContext sub = solverSubset_.context(ctx, ctx.def);
-        solver_->step(sub, dt);
-        solverSubset_.scatter(ctx, false, impactsBefore);
-        if (exactOnSubset) std::copy(segmentsAfterExact_.begin(), segmentsAfterExact_.end(), ctx.segments.begin());
+        for (const int i : exactSubset_.circleIndices()) {
+            Circle& c = ctx.circles[static_cast<std::size_t>(i)];
+            if (c.motion != Motion::dynamic) continue;
+            c.motion = Motion::fixed;
+            c.velocity = {};
+            c.angularVelocity = 0.0;
+            c.inverseMass = c.inverseInertia = 0.0;
+        }
+        for (const int b : exactSubset_.bodyIndices()) {
+            RigidBody& body = ctx.bodies[static_cast<std::size_t>(b)];
+            body.motion = Motion::fixed;
+            body.velocity = {};
+            body.angularVelocity = 0.0;
+            body.inverseMass = body.inverseInertia = 0.0;
+        }
+        solver_->step(ctx, dt);
+        // Exact's bodies, and its motion of the shared ones (kinematic circles and segments).
+        exactSubset_.scatter(ctx, true, ctx.impacts.size());
+        exactSubset_.carryAngles(ctx, true, dt);
+        std::copy(segmentsAfterExact_.begin(), segmentsAfterExact_.end(), ctx.segments.begin());
     }
 
     std::unique_ptr<StepMethod> exact_;
@@ -275,14 +296,14 @@ private:
     bool usedSolver_ = false;
     std::size_t circleCount_ = 0;
     AutoIslands islands_;
-    StepSubset exactSubset_, solverSubset_;
+    StepSubset exactSubset_;
     std::vector<std::uint8_t> onExact_;     // per island
     std::vector<std::uint8_t> chosen_;      // per node, for a subset
     std::vector<int> stintLeft_;            // per node: steps it has yet to spend on the solver
     std::vector<int> stintLength_;          // per node: the stint it serves if exact fails on it again
     std::vector<std::int64_t> crowdDynamic_, crowdNodes_; // per neighbourhood (its lowest node)
+    std::vector<int> crowds_;               // neighbourhoods on exact, most crowded first
     std::vector<int> impactCounts_;         // per island, for the blame after a failed trial
-    std::vector<int> solverMembers_, lastSolverMembers_;
     std::vector<Circle> circlesBefore_;
     std::vector<Segment> segmentsBefore_, segmentsAfterExact_;
     std::vector<RigidBody> bodiesBefore_;

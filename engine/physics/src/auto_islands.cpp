@@ -1,13 +1,17 @@
-// auto's islands: who could meet whom within the step (see auto_islands.hpp). A sweep and prune
-// over the reach boxes sorted by their left edge finds the overlapping pairs in O(n log n + pairs),
-// so a pile of a thousand balls pays a sort, not a million box tests.
+// auto's islands: who could meet whom within the step (see auto_islands.hpp). The solver's uniform
+// grid finds the overlapping boxes in O(n + pairs), so a pile of a thousand balls pays about what
+// the solver's own broadphase does, not a million box tests.
 #include "auto_islands.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rube {
 namespace {
+
+/// Grid cells this much wider than the typical neighbourhood box, so that box fits one cell.
+constexpr double kCellPerSpan = 1.1;
 
 // The box of p + v t + a t^2 / 2 over t in [0, dt]: its ends, and on each axis the turning point
 // t* = -v / a where the parabola reverses, when that falls within the step.
@@ -127,23 +131,43 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     for (const Segment& s : ctx.segments)
         if (s.material.friction > 0.0) frictionShared_.push_back(segmentReach(s, dt));
 
-    // Sweep and prune on x over the neighbourhood boxes (which hold the reach boxes), ties in node
-    // order (the result is the same on every machine).
-    const auto loose = [&](int node) { return fattened(boxes_[static_cast<std::size_t>(node)], sizes_[static_cast<std::size_t>(node)]); };
-    std::sort(order_.begin(), order_.end(), [&](int x, int y) {
-        const double ax = loose(x).min.x, bx = loose(y).min.x;
-        return ax < bx || (ax == bx && x < y);
-    });
-    for (std::size_t k = 0; k < order_.size(); ++k) {
-        const int node = order_[k];
-        const BoundingBox near = loose(node);
-        for (std::size_t l = k + 1; l < order_.size(); ++l) {
-            const int other = order_[l];
-            const BoundingBox otherNear = loose(other);
-            if (otherNear.min.x > near.max.x) break;
-            if (!near.overlaps(otherNear)) continue;
-            join(looseParent_, node, other);
-            if (boxes_[static_cast<std::size_t>(node)].overlaps(boxes_[static_cast<std::size_t>(other)])) join(parent_, node, other);
+    // The solver's uniform grid over the neighbourhood boxes (which hold the reach boxes) finds the
+    // overlapping pairs in O(n): cells a little wider than the typical box, each box's span counted
+    // at most at four sizes, so a few bullets do not blow the cells up. Pairs come out in index
+    // order, so the islands are the same on every machine.
+    looseBoxes_.clear();
+    double spanSum = 0.0;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    BoundingBox region{{inf, inf}, {-inf, -inf}};
+    for (const int node : order_) {
+        const auto n = static_cast<std::size_t>(node);
+        const BoundingBox near = fattened(boxes_[n], sizes_[n]);
+        looseBoxes_.push_back(near);
+        spanSum += std::min(std::max(near.max.x - near.min.x, near.max.y - near.min.y), 8.0 * sizes_[n]);
+        region.min = {std::min(region.min.x, near.min.x), std::min(region.min.y, near.min.y)};
+        region.max = {std::max(region.max.x, near.max.x), std::max(region.max.y, near.max.y)};
+    }
+    if (order_.size() > 1) {
+        const double cellSize = std::max(kCellPerSpan * spanSum / static_cast<double>(order_.size()), 1e-9);
+        // Within the world's bounds: escaped bodies are clamped into the grid's border cells.
+        const BoundingBox bounds{ctx.def.bounds.min - Vec2{cellSize, cellSize}, ctx.def.bounds.max + Vec2{cellSize, cellSize}};
+        const BoundingBox clipped{{std::max(region.min.x, bounds.min.x), std::max(region.min.y, bounds.min.y)},
+                                  {std::min(region.max.x, bounds.max.x), std::min(region.max.y, bounds.max.y)}};
+        if (clipped.min.x <= clipped.max.x && clipped.min.y <= clipped.max.y) region = clipped;
+        // Asleep circles only wait to be found: two of them were joined when they fell asleep
+        // together (below), and two sleeping islands apart have nothing to tell each other. A
+        // sleeping pile then costs what its awake visitors look at.
+        looks_.resize(order_.size());
+        for (std::size_t k = 0; k < order_.size(); ++k) {
+            const int node = order_[k];
+            looks_[k] = node >= circleCount || !ctx.circles[static_cast<std::size_t>(node)].sleep.asleep;
+        }
+        grid_.build(looseBoxes_, {}, region, cellSize, 4 * static_cast<int>(order_.size()) + 64);
+        grid_.findPairs(looseBoxes_, {}, looks_, pairs_);
+        for (const CandidatePair& pair : pairs_) {
+            const int a = order_[static_cast<std::size_t>(pair.circle)], b = order_[static_cast<std::size_t>(pair.other)];
+            join(looseParent_, a, b);
+            if (boxes_[static_cast<std::size_t>(a)].overlaps(boxes_[static_cast<std::size_t>(b)])) join(parent_, a, b);
         }
     }
     const auto joinBoth = [&](int a, int b) {

@@ -55,7 +55,11 @@ private:
     std::vector<std::uint8_t> isNode_;
     std::vector<std::uint8_t> friction_;   // per node: a dynamic circle with friction
     std::vector<std::uint8_t> needs_;      // per node: needs the solver by itself
-    std::vector<int> order_;    // nodes sorted by their box's min x (sweep and prune)
+    std::vector<int> order_;    // the nodes, in index order (the grid's items)
+    std::vector<BoundingBox> looseBoxes_; // per grid item: its neighbourhood box
+    std::vector<std::uint8_t> looks_;     // per grid item: it looks for pairs (asleep circles do not)
+    std::vector<CandidatePair> pairs_;
+    BroadphaseGrid grid_;
     std::vector<BoundingBox> frictionShared_; // swept boxes of shared shapes with friction
     std::vector<int> frictionCircles_; // per island: dynamic circles with friction
     std::vector<std::uint8_t> nonBlocks_; // per island: holds a body exact does not model

@@ -42,7 +42,14 @@ constexpr std::int64_t kExactBudget = 65536; // pair tests a step may spend on e
 constexpr std::int64_t kFewestEvents = 16;    // fewer affordable than this and exact is not tried
 constexpr int kFirstStint = 30;   // steps on the solver after exact first fails
 constexpr int kLongestStint = 960;
-constexpr int kExactTrials = 2;   // exact trials a step: the first, and one without the island blamed
+constexpr int kExactTrials = 2;
+// A world of more dynamic bodies than this that was wholly the solver's (a pile) keeps the solver
+// for a few steps before its islands are looked at again, 8 and doubling up to 64 while it stays
+// wholly the solver's: the island pass costs about what the solver's broadphase does, and a
+// thousand balls at rest would pay it every step for nothing.
+constexpr std::int64_t kBigWorld = 64;
+constexpr int kFirstRecheck = 8;
+constexpr int kLongestRecheck = 64;   // exact trials a step: the first, and one without the island blamed
 
 // How many events exact may resolve within the budget, for `dynamic` moving bodies among `shapes`.
 std::int64_t affordableEvents(std::int64_t dynamic, std::int64_t shapes) {
@@ -60,13 +67,34 @@ public:
             stintLeft_.assign(nodeCount, 0);
             stintLength_.assign(nodeCount, kFirstStint);
             circleCount_ = ctx.circles.size();
+            solverOnlyFor_ = 0;
         }
-        islands_.build(ctx, dt);
-        choose(ctx);
         const bool ranSolverBefore = usedSolver_;
         usedSolver_ = false;
-        const bool exactOnSubset = runExact(ctx, dt);
-        runSolver(ctx, dt, exactOnSubset, ranSolverBefore);
+        if (solverOnlyFor_ == 0 && wholeWorldExact(ctx, dt)) {
+            for (int& left : stintLeft_)
+                if (left > 0) --left;
+            return;
+        }
+        if (solverOnlyFor_ > 0) {
+            // A big world that was wholly the solver's a step ago: it is the solver's again (the
+            // solver holds everywhere), and the islands are looked at again in a few steps.
+            --solverOnlyFor_;
+            onExact_.assign(1, 0);
+            runSolver(ctx, dt, false, ranSolverBefore, dynamicBodies(ctx));
+        } else {
+            islands_.build(ctx, dt);
+            choose(ctx);
+            const bool exactOnSubset = runExact(ctx, dt);
+            runSolver(ctx, dt, exactOnSubset, ranSolverBefore, dynamicBodiesOn(false));
+            const std::int64_t dynamic = dynamicBodiesOn(true) + dynamicBodiesOn(false);
+            if (dynamic > kBigWorld && dynamicBodiesOn(true) == 0) {
+                solverOnlyFor_ = recheck_ - 1;
+                recheck_ = std::min(2 * recheck_, kLongestRecheck);
+            } else {
+                recheck_ = kFirstRecheck;
+            }
+        }
         for (int& left : stintLeft_)
             if (left > 0) --left;
     }
@@ -75,6 +103,64 @@ public:
     bool keepsSleep() const override { return true; }
 
 private:
+    // The whole world on exact without an island pass, when nothing in it could need the solver
+    // (no pair with friction, nothing turning, no stint) and exact's events over all of it can be
+    // afforded: what the island pass would choose, at the old cost. False when it does not apply
+    // or exact hit its cap (everything put back; the island pass then decides).
+    bool wholeWorldExact(StepContext& ctx, double dt) {
+        if (frictionPair(ctx) || anyTurning(ctx.bodies, ctx.pivots) ||
+            std::any_of(stintLeft_.begin(), stintLeft_.end(), [](int left) { return left > 0; }))
+            return false;
+        const std::int64_t dynamic = dynamicBodies(ctx);
+        const auto shapes = static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() + ctx.bodies.size());
+        const std::int64_t affordable = affordableEvents(dynamic, shapes);
+        if (affordable < kFewestEvents) return false;
+        wakeAll(ctx.circles); // exact moves every body: the solver's sleepers wake first
+        circlesBefore_.assign(ctx.circles.begin(), ctx.circles.end());
+        segmentsBefore_.assign(ctx.segments.begin(), ctx.segments.end());
+        bodiesBefore_.assign(ctx.bodies.begin(), ctx.bodies.end());
+        const std::size_t impactsBefore = ctx.impacts.size();
+        const StepStats statsBefore = ctx.stats;
+        WorldDef trialDef = ctx.def;
+        trialDef.maxEventsPerStep = static_cast<int>(std::min<std::int64_t>(ctx.def.maxEventsPerStep, affordable));
+        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats, ctx.pivots, ctx.ropes};
+        trial.sleep = ctx.sleep;
+        exact_->step(trial, dt);
+        if (ctx.stats.capsHit == statsBefore.capsHit) {
+            ctx.stats.exactBodySteps += dynamic;
+            std::fill(stintLength_.begin(), stintLength_.end(), kFirstStint);
+            recheck_ = kFirstRecheck;
+            return true;
+        }
+        std::copy(circlesBefore_.begin(), circlesBefore_.end(), ctx.circles.begin());
+        std::copy(segmentsBefore_.begin(), segmentsBefore_.end(), ctx.segments.begin());
+        std::copy(bodiesBefore_.begin(), bodiesBefore_.end(), ctx.bodies.begin());
+        ctx.impacts.resize(impactsBefore);
+        ctx.stats = statsBefore;
+        return false;
+    }
+
+    // True when a pair could touch with friction somewhere (a pair's friction is the product of
+    // both: it takes two surfaces with friction).
+    static bool frictionPair(const StepContext& ctx) {
+        int dynamicWithFriction = 0;
+        bool otherWithFriction = false;
+        for (const Circle& c : ctx.circles) {
+            if (c.material.friction <= 0.0) continue;
+            if (c.motion == Motion::dynamic) ++dynamicWithFriction;
+            else otherWithFriction = true;
+        }
+        if (dynamicWithFriction == 0) return false;
+        if (dynamicWithFriction > 1 || otherWithFriction) return true;
+        return std::any_of(ctx.segments.begin(), ctx.segments.end(), [](const Segment& s) { return s.material.friction > 0.0; });
+    }
+
+    static std::int64_t dynamicBodies(const StepContext& ctx) {
+        return static_cast<std::int64_t>(
+            std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion == Motion::dynamic; }) +
+            std::count_if(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
+    }
+
     std::int64_t sharedShapes(const StepContext& ctx) const {
         const auto circles = std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion != Motion::dynamic; });
         return static_cast<std::int64_t>(circles) + static_cast<std::int64_t>(ctx.segments.size());
@@ -257,14 +343,14 @@ private:
     // warm-start cache and sleeping islands keep naming bodies by their world index from step to
     // step whichever islands exact takes: exact's bodies are shown to it as fixed where they
     // started (none is within reach of a solver island this step), then given exact's results.
-    void runSolver(StepContext& ctx, double dt, bool exactOnSubset, bool ranSolverBefore) {
+    void runSolver(StepContext& ctx, double dt, bool exactOnSubset, bool ranSolverBefore, std::int64_t dynamicOnSolver) {
         if (allOnExact()) return;
         // A solver that sat out some steps starts afresh: its warm-start impulses belong to
         // contacts that have since moved.
         if (!ranSolverBefore || !solver_) solver_ = makeSolverMethod();
         usedSolver_ = true;
         ++ctx.stats.autoSolverSteps;
-        ctx.stats.solverBodySteps += dynamicBodiesOn(false);
+        ctx.stats.solverBodySteps += dynamicOnSolver;
         if (!exactOnSubset) {
             solver_->step(ctx, dt);
             return;
@@ -294,6 +380,8 @@ private:
     std::unique_ptr<StepMethod> exact_;
     std::unique_ptr<StepMethod> solver_;
     bool usedSolver_ = false;
+    int solverOnlyFor_ = 0; // steps the whole world stays the solver's without an island pass
+    int recheck_ = kFirstRecheck;
     std::size_t circleCount_ = 0;
     AutoIslands islands_;
     StepSubset exactSubset_;

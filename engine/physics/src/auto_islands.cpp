@@ -139,6 +139,12 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     double spanSum = 0.0;
     constexpr double inf = std::numeric_limits<double>::infinity();
     BoundingBox region{{inf, inf}, {-inf, -inf}};
+    // A body whose state is not finite (a NaN) stays out of the grid, an island of its own: its box
+    // would poison the cells of every other.
+    std::erase_if(order_, [&](int node) {
+        const BoundingBox& box = boxes_[static_cast<std::size_t>(node)];
+        return !isFinite(box.min) || !isFinite(box.max) || !std::isfinite(sizes_[static_cast<std::size_t>(node)]);
+    });
     for (const int node : order_) {
         const auto n = static_cast<std::size_t>(node);
         const BoundingBox near = fattened(boxes_[n], sizes_[n]);

@@ -22,7 +22,7 @@ enum class Method : std::uint8_t {
     turnBased, ///< bodies move one by one until their first impact (lecture 3): order matters
     exact,     ///< earliest time of impact over all pairs, resolved one at a time (lecture 3's ideal method)
     solver,    ///< substepped sequential-impulse contact solver, for piles and resting contact
-    automatic, ///< "auto": the cheapest that holds, step by step: exact while bodies are few and impacts sparse, else the solver
+    automatic, ///< "auto": the cheapest that holds, step by step and island by island: exact where bodies are few and impacts sparse and nothing needs friction or turning, else the solver
 };
 
 /// The method's name as scene files and the command line spell it ("turn-based", ...).

@@ -394,10 +394,11 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
     };
     const Played solved = playFrom(0.3);
     REQUIRE(solved.goal);
-    // 314 since friction is warm started across steps (3db5d9d; 308 with rigid warm starting, 299 before):
-    // the dominoes rest on the floor without sinking and the last one reaches the marble later. This check
-    // did not run from 3db5d9d on (its name held a ';', which ctest split); the golden frame is seesaw_0314.
-    CHECK(*solved.goal == 314);
+    // 314 with warm-started friction (3db5d9d; 308 with rigid warm starting, 299 before; this check did not
+    // run from 3db5d9d to 20c2154, its name held a ';' that ctest split). 297 since auto chooses per island:
+    // the heavy ball falls on exact's parabola until it nears the plank (the solver's semi-implicit fall
+    // was 2.6 mm lower after 19 steps), so it strikes the plank at another instant.
+    CHECK(*solved.goal == 297);
     // Turned over: left end down on the floor, 1.5 sin a + 0.05 cos a = 0.6, a = 0.378 rad.
     CHECK(solved.plankAngle == Approx(0.378).margin(0.005));
     CHECK(solved.heavyLeftmost > -0.3); // the gate stopped the heavy ball: only the striker went on
@@ -405,8 +406,8 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
                           << solved.fellAt[3] << " " << solved.fellAt[4]);
     CHECK(solved.fellAt[0] > 0);
     for (std::size_t d = 1; d < 5; ++d) CHECK(solved.fellAt[d] > solved.fellAt[d - 1]); // one after another
-    CHECK(playFrom(0.8).goal);
-    CHECK_FALSE(playFrom(1.5).goal); // over the pivot: the plank does not turn
+    CHECK(playFrom(0.7).goal);
+    CHECK_FALSE(playFrom(1.6).goal); // right of the pivot: the plank does not turn over
     CHECK_FALSE(playFrom(2.7).goal); // on the low end: the ball rolls off to the right
     // Nothing placed: the plank rests on its right end and no domino falls.
     const Played idle = playFrom(std::nullopt);

@@ -39,6 +39,7 @@ constexpr Golden kGoldens[] = {
     {"bounce", 120, true, false},        // t = 2 s: on the way up after the first bounce
     {"bullet", 1, true, true},           // the step that crosses the line: the impact and the way back
     {"float", 300, false, false},        // t = 5 s: one high, one half under, one on the bottom
+    {"islands", 45, true, true},         // t = 0.75 s: the ball's path off the cap (exact), the pile landing (solver)
     {"newtons-cradle", 61, false, true}, // just after the chain of impacts at t = 1 s
     {"pendulum", 90, true, false},       // t = 1.5 s: the three ropes out of step, the double pendulum folded
     {"pile", 45, false, false},          // t = 0.75 s: the balls landing on the pile
@@ -114,4 +115,5 @@ TEST_CASE("pool-break matches its golden frames", "[screenshot][scene]") { check
 TEST_CASE("projectile matches its golden frames", "[screenshot][scene]") { checkGoldens("projectile"); }
 TEST_CASE("rolling matches its golden frames", "[screenshot][scene]") { checkGoldens("rolling"); }
 TEST_CASE("seesaw-domino matches its golden frames", "[screenshot][scene]") { checkGoldens("seesaw-domino"); }
+TEST_CASE("islands matches its golden frames", "[screenshot][scene]") { checkGoldens("islands"); }
 TEST_CASE("slope-rest matches its golden frames", "[screenshot][scene]") { checkGoldens("slope-rest"); }

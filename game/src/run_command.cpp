@@ -99,8 +99,15 @@ std::string unstableStateMessage(const World& world) {
 std::string methodDescription(const World& world) {
     std::string text(methodName(world.def().method));
     if (world.def().method != Method::automatic) return text;
-    const std::int64_t solver = world.stats().autoSolverSteps;
-    return text + " (exact " + std::to_string(world.stats().steps - solver) + " steps, solver " + std::to_string(solver) + ")";
+    const StepStats& stats = world.stats();
+    const std::int64_t solver = stats.autoSolverSteps;
+    const std::int64_t bodySteps = stats.exactBodySteps + stats.solverBodySteps;
+    char share[32] = "-";
+    if (bodySteps > 0)
+        std::snprintf(share, sizeof share, "%.1f %%", 100.0 * static_cast<double>(stats.exactBodySteps) / static_cast<double>(bodySteps));
+    return text + " (exact " + std::to_string(stats.steps - solver) + " steps, solver " + std::to_string(solver) +
+           "; body-steps exact " + std::to_string(stats.exactBodySteps) + ", solver " + std::to_string(stats.solverBodySteps) +
+           ", exact share " + share + ")";
 }
 
 int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {

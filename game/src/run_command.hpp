@@ -15,7 +15,7 @@ class World;
 namespace rube::game {
 
 /// The method's name for a summary; for auto, also how its steps were shared:
-/// "auto (exact 590 steps, solver 10)".
+/// "auto (exact 590 steps, solver 10; body-steps exact 1180, solver 20, exact share 98.3 %)".
 std::string methodDescription(const World& world);
 
 /// Why the run's physics cannot be trusted (a state went NaN or infinite, a body was isolated), as

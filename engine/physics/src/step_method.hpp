@@ -21,6 +21,7 @@ struct StepContext {
     std::vector<Impact>& impacts; ///< append every impact resolved, in order
     StepStats& stats;             ///< add impacts, resting contacts, caps hit; set maxEventsInStep
     std::span<const Pivot> pivots = {}; ///< rigid bodies pinned to the world (the solver models them)
+    std::span<const Rope> ropes = {};   ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
     bool sleep = false;           ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
 };
 

@@ -189,7 +189,7 @@ void World::step() {
     // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
     isolateNonFinite(circles_, bodies_, *finite_, stats_);
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, *finite_, stats_);
-    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_};
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
     context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && method_->keepsSleep();

@@ -22,7 +22,7 @@ enum class Method : std::uint8_t {
     turnBased, ///< bodies move one by one until their first impact (lecture 3): order matters
     exact,     ///< earliest time of impact over all pairs, resolved one at a time (lecture 3's ideal method)
     solver,    ///< substepped sequential-impulse contact solver, for piles and resting contact
-    automatic, ///< "auto": the cheapest that holds, step by step: exact while bodies are few and impacts sparse, else the solver
+    automatic, ///< "auto": the cheapest that holds, step by step and island by island: exact where bodies are few and impacts sparse and nothing needs friction or turning, else the solver
 };
 
 /// The method's name as scene files and the command line spell it ("turn-based", ...).
@@ -85,7 +85,9 @@ struct StepStats {
     std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
     std::int64_t escapes = 0;        ///< circles and rigid bodies that left the bounds (each counted once)
     int maxEventsInStep = 0;
-    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver (the rest went to exact)
+    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver, for some or all bodies (the rest went to exact)
+    std::int64_t exactBodySteps = 0;  ///< auto: dynamic bodies (circles and rigid bodies) moved by exact, summed over steps
+    std::int64_t solverBodySteps = 0; ///< auto: dynamic bodies moved by the solver (asleep ones too), summed over steps
     bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
     std::int64_t speedClamps = 0;    ///< solver and auto: speeds cut to WorldDef::maxTranslation or maxRotation (one per body and step)
     std::int64_t isolatedBodies = 0; ///< bodies frozen because their state went non-finite (see World::step)

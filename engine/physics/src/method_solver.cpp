@@ -4,6 +4,7 @@
 #include "broadphase_grid.hpp"
 #include "contact_solver.hpp"
 #include "rigid_stage.hpp"
+#include "solver_bounce_flight.hpp"
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
 #include "solver_impact_normal.hpp"
@@ -322,6 +323,9 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
         }
     }
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
+    // Rigid bodies hold circles through their own contacts, which the count of a circle's contacts
+    // does not see; bullets are bounced by the continuous pass.
+    if (!hasRigid_) carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_, ctx.restingSpeed, ctx.def.gravity, dt, h);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
     if (turning_) turningContacts_.detach(contacts_);
     tangentImpulses_.clear();

@@ -154,12 +154,12 @@ bool ContinuousSweep::resolve(int i, const Hit& hit, const SweepInput& in, StepC
     } else {
         const Segment& seg = ctx.segments[hit.other - circleCount];
         const Vec2 segMove = seg.motion() == Motion::kinematic ? seg.velocity * dt : Vec2{};
-        // The substeps carried the circle along p0 + v0 tau + g tau (tau + h) / 2, which passes through
-        // both ends of the chord and sags below it by g dt^2 f (1 - f) / 2 at fraction f (0.34 mm mid-step
-        // at 60 Hz): enough to turn a glancing cap's normal by half a degree. Only a circle in free flight; one
-        // that contacts pushed did not follow that parabola. Fixed-point passes sweep the
-        // straight line through the path's point at the last estimate, exact at that fraction (as
-        // aimAtTimeOfImpact does).
+        // The substeps carried a circle in free flight along p0 + v0 tau + g tau (tau + h) / 2, which
+        // passes through both ends of the chord and sags below it by g dt^2 f (1 - f) / 2 at fraction f
+        // (0.34 mm mid-step at 60 Hz): enough to turn a glancing cap's normal by half a degree. Two
+        // fixed-point passes sweep the straight line through the path's point at the last estimate,
+        // exact at that fraction (as aimAtTimeOfImpact does). A circle that contacts pushed did not
+        // follow that parabola: its chord stands.
         const Vec2 sag = in.inFlight[static_cast<std::size_t>(i)] ? ctx.def.gravity * (0.5 * dt * dt) : Vec2{};
         const auto along = [&](double f) { return (move - segMove) + sag * (f - 1.0); }; // p0 + along(f) f is the path at f
         for (int pass = 0; pass < 2; ++pass) {

@@ -175,7 +175,7 @@ void applyRestitution(std::span<const ContactConstraint> contacts, std::span<con
         const ContactConstraint& c = contacts[k];
         const ContactRecord& r = records[k];
         // Slow contacts rest: bouncing them would make a resting pile jitter forever.
-        if (r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold) continue;
+        if (r.carried || r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold) continue;
         SolverBody& a = bodies[c.a];
         SolverBody& b = bodies[c.b];
         const double vn = c.normal.dot(a.velocity - b.velocity);

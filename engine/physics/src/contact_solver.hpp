@@ -52,6 +52,9 @@ struct ContactRecord {
     double touchTime = 0.0;     ///< seconds into the step at which it first touched
     int firstTouch = -1;        ///< substep in which a contact that started at rest first pushed, or -1
     double tangentImpulse = 0.0; ///< the pair's friction impulse at the end of the last step: friction's warm start
+    double impactTime = -1.0;   ///< seconds into the step at which the swept pair touches (aimAtTimeOfImpact), or -1
+    bool carried = false;       ///< bounced at its time of impact and flown on (carryPastImpact): restitution leaves it
+    Vec2 pointOfImpact;         ///< where a carried bounce touched (the circle has flown on since)
 };
 
 struct FrictionState;

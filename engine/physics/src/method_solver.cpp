@@ -4,6 +4,7 @@
 #include "broadphase_grid.hpp"
 #include "contact_solver.hpp"
 #include "rigid_stage.hpp"
+#include "solver_bounce_flight.hpp"
 #include "solver_contacts.hpp"
 #include "solver_friction.hpp"
 #include "solver_impact_normal.hpp"
@@ -124,6 +125,7 @@ private:
     RigidStage rigid_;
     SleepIslands sleep_;
     std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
+    std::vector<std::uint8_t> inFlight_;   // per circle: dynamic, and no contact pushed it this step
 };
 
 std::span<const BoundingBox> SolverMethod::bulletPaths(double dt) {
@@ -322,6 +324,9 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
         }
     }
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
+    // Rigid bodies hold circles through their own contacts, which the count of a circle's contacts
+    // does not see; bullets are bounced by the continuous pass.
+    if (!hasRigid_) carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_, ctx.restingSpeed, ctx.def.gravity, dt, h);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
     if (turning_) turningContacts_.detach(contacts_);
     tangentImpulses_.clear();
@@ -348,7 +353,15 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
     }
     const std::size_t firstImpact = ctx.impacts.size();
     // The sweep sees segments at their start, moving with their velocity over the step.
-    const SweepInput sweepInput{start_, margins_, bullets_, isBullet_, isDynamic_, cache_, kMaxSweepCellsPerAxis};
+    inFlight_.assign(isDynamic_.begin(), isDynamic_.end());
+    if (hasRigid_) std::fill(inFlight_.begin(), inFlight_.end(), std::uint8_t{0}); // boxes' contacts are not listed here
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        const ContactConstraint& c = contacts_[k];
+        if (c.impulse <= 0.0 && records_[k].firstTouch < 0) continue;
+        inFlight_[static_cast<std::size_t>(c.a)] = 0;
+        if (c.b < circleCount_) inFlight_[static_cast<std::size_t>(c.b)] = 0;
+    }
+    const SweepInput sweepInput{start_, margins_, bullets_, isBullet_, isDynamic_, cache_, inFlight_, kMaxSweepCellsPerAxis};
     int impacts = sweep_.run(sweepInput, grid_, ctx, dt);
     if (hasRigid_) impacts += rigid_.sweep(ctx, dt);
     for (Segment& seg : ctx.segments) {

@@ -192,7 +192,7 @@ int recordContactImpacts(std::span<const ContactConstraint> contacts, std::span<
         impact.otherKind = r.kind;
         impact.other = c.b < circleCount ? c.b : c.b - circleCount;
         impact.time = ctx.time + r.touchTime;
-        impact.pointOfImpact = circle.position - c.normal * circle.radius;
+        impact.pointOfImpact = r.carried ? r.pointOfImpact : circle.position - c.normal * circle.radius;
         impact.normal = c.normal;
         impact.approachSpeed = r.approachSpeed;
         ctx.impacts.push_back(impact);

@@ -89,6 +89,7 @@ void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactR
         // gap). Its start value is n . (q0 - feature) - reach.
         c.normal = away / distance;
         c.baseSeparation = std::max(c.normal.dot(q0 - feature) - reach, 0.0);
+        if (fraction >= 0.0) records[k].impactTime = t;
         if (!otherIsCircle) records[k].kind = along <= 0.0 || along >= 1.0 ? Other::segmentCap : Other::segment;
     }
 }

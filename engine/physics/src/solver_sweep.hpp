@@ -33,6 +33,7 @@ struct SweepInput {
     std::span<const std::uint8_t> isBullet; ///< per circle
     std::span<const std::uint8_t> isDynamic; ///< per circle
     const ContactCache& contacts;           ///< this step's contacts: pairs the solver already kept apart
+    std::span<const std::uint8_t> inFlight; ///< per circle: no contact pushed it this step, so gravity alone bent its path
     int maxCellsPerAxis = 8;                ///< a longer path than this looks at every shape instead
 };
 

@@ -1,0 +1,106 @@
+// A lone bounce resolved at its time of impact, and the circle flown on for the rest of the step.
+#include "solver_bounce_flight.hpp"
+
+#include <vector>
+
+namespace rube {
+
+namespace {
+
+/// A bounce to carry: its contact, and the circle's change of velocity and displacement.
+struct Carry {
+    std::size_t contact = 0;
+    Vec2 velocityChange;
+    Vec2 displacementChange;
+    bool deferred = false; ///< touching early next step: left in flight, no impact this step
+};
+
+
+} // namespace
+
+int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
+                    std::span<const Circle> circles, std::span<const double> inverseMass,
+                    std::span<const std::uint8_t> isBullet, int circleCount, double threshold,
+                    Vec2 gravity, double dt, double h) {
+    bool any = false;
+    for (const ContactRecord& r : records) any = any || (r.impactTime >= 0.0 && r.firstTouch >= 0);
+    if (!any) return 0; // most steps: nothing to carry, nothing counted
+    std::vector<Carry> carries;
+    std::vector<int> carryOf(static_cast<std::size_t>(circleCount), -1); // per circle: its entry in carries
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const ContactConstraint& c = contacts[k];
+        const ContactRecord& r = records[k];
+        const double t0 = r.impactTime;
+        if (t0 < 0.0 || t0 > dt + h || r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold) continue;
+        const std::size_t a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
+        if (inverseMass[b] > 0.0 || isBullet[a]) continue;
+        // The other body (fixed, or kinematic at a constant velocity) keeps its velocity all step.
+        const Vec2 relative = circles[a].velocity - bodies[b].velocity;
+        const double gn = gravity.dot(c.normal);
+        const double vn = c.normal.dot(bodies[a].velocity - bodies[b].velocity);
+        const double s = c.baseSeparation + c.normal.dot(bodies[a].displacement - bodies[b].displacement);
+        if (t0 > dt) {
+            // Touching early in the next step: the last substep's speculative constraint (vn >= -s / h)
+            // caught it up to h early, at the end of this step. Left in free flight instead, it is
+            // bounced at its time of impact next step: v.n = n.(v0 + g dt), gap = s0 + n.(v0 dt + g dt (dt + h) / 2).
+            const double normalVelocity = c.normal.dot(relative) + gn * dt;
+            const double gap = c.baseSeparation + c.normal.dot(relative) * dt + 0.5 * gn * dt * (dt + h);
+            if (gap < 0.0) continue;
+            carryOf[a] = static_cast<int>(carries.size());
+            carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s), true});
+            continue;
+        }
+        // The substeps (semi-implicit Euler, v += g h then x += v h) move the circle exactly along the
+        // parabola x0 + (v0 + g h/2) t + g t^2/2 at every substep's end: its state (x, v) is the
+        // continuous state (x, v + g h/2). The bounce is made on that continuous state, so a C = 1
+        // bounce keeps the flight's energy (its apex) exactly, and mapped back by - g h/2.
+        const double approach = -(c.normal.dot(relative) + gn * (t0 + 0.5 * h)); // u = -n.v(t0), continuous
+        if (approach <= threshold) continue;
+        // Reflected at t0 (v.n -> C u, lecture 3), then free flight for tau = dt - t0 along n:
+        // v.n = C u + g.n tau, gap = C u tau + g.n tau^2 / 2.
+        const double tau = dt - t0;
+        const double gap = r.bounciness * approach * tau + 0.5 * gn * tau * tau;
+        if (gap <= 0.0) continue; // back on the surface within the step: the end-of-step rule rests it
+        const double normalVelocity = r.bounciness * approach + gn * tau - 0.5 * gn * h;
+        carryOf[a] = static_cast<int>(carries.size());
+        carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s), false});
+    }
+    // A circle with any other contact (a speculative one: it pushed on nothing else) is near some
+    // shape it could be carried into, or is one of a crowd (a pile's balls landing on its floor):
+    // it keeps the end-of-step restitution.
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const ContactConstraint& c = contacts[k];
+        for (const int body : {c.a, c.b}) {
+            if (body >= circleCount) continue;
+            const int i = carryOf[static_cast<std::size_t>(body)];
+            if (i >= 0 && carries[static_cast<std::size_t>(i)].contact != k) carryOf[static_cast<std::size_t>(body)] = -2;
+        }
+    }
+    int carried = 0;
+    for (std::size_t i = 0; i < carries.size(); ++i) {
+        const Carry& carry = carries[i];
+        const ContactConstraint& c = contacts[carry.contact];
+        const std::size_t a = static_cast<std::size_t>(c.a);
+        if (carryOf[a] != static_cast<int>(i)) continue;
+        SolverBody& circle = bodies[a];
+        ContactRecord& r = records[carry.contact];
+        circle.velocity += carry.velocityChange;
+        circle.displacement += carry.displacementChange;
+        r.carried = true;
+        if (carry.deferred) {
+            // Not touched yet: no impulse to warm start next step's contact with, no impact to record.
+            contacts[carry.contact].impulse = 0.0;
+            r.firstTouch = -1;
+            continue;
+        }
+        // Where and when it touched: on the substeps' path p0 + v0 t + g t (t + h) / 2.
+        const double t0 = r.impactTime;
+        const Vec2 atImpact = circles[a].position + circles[a].velocity * t0 + gravity * (0.5 * t0 * (t0 + h));
+        r.pointOfImpact = atImpact - c.normal * circles[a].radius;
+        r.touchTime = t0;
+        ++carried;
+    }
+    return carried;
+}
+
+} // namespace rube

@@ -26,7 +26,7 @@ std::string rowScene(int n, int k, const std::string& method) {
 
 } // namespace
 
-TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <= 2^22; no method means exact, else auto",
+TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <= 2^22, no method means exact, else auto",
           "[scene][budget]") {
     for (const int k : {0, 1, 7}) {
         for (int n = 2030; n <= 2060; n += 3) {
@@ -52,7 +52,7 @@ TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <
     }
 }
 
-TEST_CASE("an output folder has one holder at a time; the lock goes with its holder", "[frames][lock]") {
+TEST_CASE("an output folder has one holder at a time, the lock goes with its holder", "[frames][lock]") {
     const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("rube-lock-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     {

@@ -22,14 +22,15 @@ bool clampRigidMotion(Vec2& velocity, double& omega, double speedLimit, double s
 
 /// solver and auto: cuts every dynamic rigid body's speed to def.maxTranslation / dt and every turning
 /// one's spin to def.maxRotation / dt, counting each body cut in stats.speedClamps (circles, which the
-/// solver sweeps, are not cut). Bodies already non-finite are isolated instead (see below).
-void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const WorldDef& def, const FiniteSnapshot& snapshot,
-                 StepStats& stats);
+/// solver sweeps, only past a runaway's speed). Call it after isolateNonFinite: it assumes finite states.
+void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const WorldDef& def, StepStats& stats);
 
 /// Freezes every body whose state is not finite: back where it was last finite, fixed (infinite
 /// mass, so no contact or rope moves it and it moves nothing by its own velocity), velocity and spin
-/// zero; counted in stats.isolatedBodies (the first one named) and stats.nonFinite set. Then records
-/// every body's finite pose into `snapshot`. Returns true when it isolated something.
-bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot, StepStats& stats);
+/// zero; counted in stats.isolatedBodies (the first one named) and stats.nonFinite set. With `record`
+/// (after a step) it then records every body's pose into `snapshot`; before a step only what a caller
+/// changed is checked. Returns true when it isolated something.
+bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot, StepStats& stats,
+                      bool record);
 
 } // namespace rube

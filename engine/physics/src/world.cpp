@@ -187,8 +187,8 @@ void World::step() {
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
     // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
     // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
-    isolateNonFinite(circles_, bodies_, *finite_, stats_);
-    if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, *finite_, stats_);
+    isolateNonFinite(circles_, bodies_, *finite_, stats_, false);
+    if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
@@ -220,7 +220,7 @@ void World::step() {
 
 void World::checkState() {
     // A body the step made non-finite is frozen where it last was finite and reported (speed_limits.cpp).
-    isolateNonFinite(circles_, bodies_, *finite_, stats_);
+    isolateNonFinite(circles_, bodies_, *finite_, stats_, true);
     for (std::size_t i = 0; i < circles_.size(); ++i) {
         const Circle& c = circles_[i];
         if (!escaped_[i] && !def_.bounds.contains(c.position)) {

@@ -9,8 +9,8 @@
 // and a ball held by two faces that are not parallel stands still. Meant for sparse scenes: every
 // event costs an O(n^2) search, and a pile of many balls is the solver method's job.
 #include "block_pairs.hpp"
+#include "exact_held_faces.hpp"
 #include "kinematic_pose.hpp"
-#include "polynomial.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
 
@@ -43,18 +43,8 @@ struct Candidate {
     int other = -1;
     Vec2 normal;
     BlockEvent block; ///< a block's impact instead, when block.block >= 0 (lecture 3's blocks)
-    int face = -1;    ///< instead, the held circle of faces_[face] slides off the end of that face
+    int face = -1;    ///< instead, the circle held on held_'s face `face` slides off the end of that face
 };
-
-// A circle held on a static line's face for the rest of the step (see the file's comment).
-struct Held {
-    int circle = -1;
-    int segment = -1;
-    Vec2 normal; ///< of the face, towards the circle
-};
-
-// Two faces hold a circle still when their normals are not parallel (|n1 x n2| above round-off).
-constexpr double kParallelSine = 1e-9;
 
 // A pair resting for the rest of the step, in one circle's list: the other circle's index, or
 // circleCount_ + a segment's; and its PairState.
@@ -85,9 +75,7 @@ public:
         restingOf_.resize(ctx.circles.size());
         for (std::vector<RestingPair>& list : restingOf_) list.clear(); // capacity kept: no allocation once grown
         blockResting_.clear();
-        faces_.clear();
-        accelerations_.assign(ctx.circles.size(), ctx.def.gravity);
-        gravity_ = ctx.def.gravity;
+        held_.reset(ctx.circles.size(), ctx.def.gravity);
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
         // resolve it" (lecture 3). Work is bounded by def.maxEventsPerStep.
@@ -173,16 +161,16 @@ private:
                 // Two falling balls share gravity: relative to each other they move in straight lines
                 // (the lecture's quadratic); against a kinematic circle the relative motion is a parabola.
                 // A ball held on a face accelerates with what the face leaves of gravity.
-                const Vec2 a = accelerations_[i];
+                const Vec2 a = held_.acceleration(i);
                 const CircleMotion motion{c.position, c.velocity - o.velocity, c.radius,
-                                          dynamicOther ? a - accelerations_[j] : a};
+                                          dynamicOther ? a - held_.acceleration(j) : a};
                 consider(circleCircleCollision(motion, o.position, o.radius, horizon), i, Other::circle, j);
             }
             for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
                 const Segment& s = ctx.segments[k];
                 if (resting(i, Other::segment, k)) continue;
                 const CircleMotion motion{c.position, c.velocity - velocityTowards(s, c.position), c.radius,
-                                          accelerations_[i]};
+                                          held_.acceleration(i)};
                 const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, horizon);
                 consider(hit, i, hit && hit->lineCap ? Other::segmentCap : Other::segment, k);
             }
@@ -195,8 +183,8 @@ private:
             if (event.time < best.time) best = Candidate{event.time, -1, event.kind, event.other, event.normal, event, -1};
         }
         // A held circle leaves its face where its centre passes the face's end: from there on its cap.
-        for (int f = 0; f < static_cast<int>(faces_.size()); ++f) {
-            const auto leaves = leavesFace(ctx, faces_[f], std::min(horizon, best.time));
+        for (int f = 0; f < held_.size(); ++f) {
+            const auto leaves = held_.leavesFace(ctx, f, std::min(horizon, best.time));
             if (leaves && *leaves < best.time) {
                 best = Candidate{};
                 best.time = *leaves;
@@ -212,7 +200,7 @@ private:
         for (std::size_t i = 0; i < ctx.circles.size(); ++i) {
             Circle& c = ctx.circles[i];
             if (c.motion == Motion::dynamic) {
-                const Vec2 a = accelerations_[i]; // gravity, or what the faces holding it leave of it
+                const Vec2 a = held_.acceleration(i); // gravity, or what the faces holding it leave of it
                 c.position += c.velocity * t + a * (0.5 * t * t); // p + v t + a t^2 / 2
                 c.velocity += a * t;
             } else if (c.motion == Motion::kinematic) {
@@ -269,7 +257,7 @@ private:
                 if ((s.b - s.a).normal().dot(hit.normal) < 0.0) state = kRestingMinus;
             }
             setResting(hit.circle, hit.kind, hit.other, state);
-            if (hit.kind == Other::segment && ctx.bodies.empty()) hold(ctx, hit.circle, hit.other, hit.normal);
+            if (hit.kind == Other::segment && ctx.bodies.empty()) held_.hold(ctx, hit.circle, hit.other, hit.normal);
         } else {
             // A real impact may drive a body into what it rests on: search those pairs again.
             searchAgain(hit.circle);
@@ -278,7 +266,7 @@ private:
     }
 
     void searchAgain(int circle) {
-        if (!faces_.empty()) letGo(circle);
+        if (!held_.empty()) held_.letGo(circle);
         // Every resting pair with this circle: its own list, and its entry in each resting partner's.
         std::vector<RestingPair>& list = restingOf_[static_cast<std::size_t>(circle)];
         for (const RestingPair& pair : list)
@@ -289,76 +277,11 @@ private:
         if (!blockResting_.empty()) forgetResting(Other::circle, circle);
     }
 
-    // A resting contact on a static line's face: the circle stays on it for the rest of the step. A
-    // face that carries no weight (gravity pulls the circle off it) holds nothing. Lines of a world
-    // with blocks are left to the end-of-step settle (the blocks' search assumes plain gravity).
-    void hold(StepContext& ctx, int circle, int segment, Vec2 normal) {
-        const Segment& s = ctx.segments[segment];
-        if (s.motion() != Motion::fixed || !(ctx.def.gravity.dot(normal) < 0.0)) return;
-        Circle& c = ctx.circles[circle];
-        for (const Held& held : faces_) {
-            // Held by two faces at an angle, it is wedged: the only velocity both leave is zero.
-            if (held.circle == circle && std::abs(held.normal.cross(normal)) > kParallelSine) c.velocity = {};
-        }
-        faces_.push_back(Held{circle, segment, normal});
-        accelerations_[circle] = heldAcceleration(ctx.def.gravity, circle);
-    }
-
-    // Gravity less what the faces holding the circle cancel: the nearest acceleration to g that
-    // pushes into none of them (a ~ g - (g . n) n on one face; zero in a V).
-    Vec2 heldAcceleration(Vec2 g, int circle) const {
-        const auto pushesIntoNone = [&](Vec2 a) {
-            for (const Held& held : faces_)
-                if (held.circle == circle && a.dot(held.normal) < 0.0) return false;
-            return true;
-        };
-        if (pushesIntoNone(g)) return g;
-        for (const Held& held : faces_) {
-            if (held.circle != circle) continue;
-            const Vec2 along = g - held.normal * g.dot(held.normal);
-            // Round-off may leave a hair into the face itself: that one holds it, so it counts as on it.
-            bool ok = true;
-            for (const Held& other : faces_)
-                if (other.circle == circle && &other != &held && along.dot(other.normal) < 0.0) ok = false;
-            if (ok) return along;
-        }
-        return {};
-    }
-
-    // The earliest time within the horizon at which the held circle's centre passes an end of its
-    // face, along(t) = along0 + v t + a t^2 / 2 against 0 and the face's length.
-    std::optional<double> leavesFace(const StepContext& ctx, const Held& held, double horizon) const {
-        const Segment& s = ctx.segments[held.segment];
-        const Circle& c = ctx.circles[held.circle];
-        const Vec2 axis = s.b - s.a;
-        const double length = axis.length();
-        const Vec2 u = axis * (1.0 / length);
-        const double along = (c.position - s.a).dot(u);
-        const double speed = c.velocity.dot(u);
-        const double accel = accelerations_[held.circle].dot(u);
-        if (along < 0.0 || along > length) return 0.0; // already past an end (round-off at a joint)
-        std::optional<double> first;
-        for (const double end : {0.0, length}) {
-            const Polynomial p{{along - end, speed, 0.5 * accel, 0.0, 0.0}};
-            const auto t = earliestRoot(p, 0.0, horizon, true);
-            if (t && (!first || *t < *first)) first = t;
-        }
-        return first;
-    }
-
     // Held face `f` ends: its circle is searched against it again (its cap now) and falls freely.
     void release(int f) {
-        const Held held = faces_[f];
-        faces_.erase(faces_.begin() + f);
+        const HeldFace held = held_.release(f);
         const int column = columnOf(Other::segment, held.segment);
         std::erase_if(restingOf_[static_cast<std::size_t>(held.circle)], [&](const RestingPair& p) { return p.column == column; });
-        accelerations_[held.circle] = heldAcceleration(gravity_, held.circle);
-    }
-
-    // A real impact: the circle is no longer held by any face.
-    void letGo(int circle) {
-        std::erase_if(faces_, [&](const Held& held) { return held.circle == circle; });
-        accelerations_[circle] = gravity_;
     }
 
     // Leaves out of blockResting_ every pair with this circle (kind circle) or block (kind body).
@@ -514,9 +437,7 @@ private:
     std::vector<int> levels_;         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit
     std::vector<BlockPair> blockResting_; ///< blocks' pairs resting for the rest of the step (few)
-    std::vector<Held> faces_;          ///< circles held on static faces for the rest of the step (few)
-    std::vector<Vec2> accelerations_;  ///< per circle: gravity, or what the faces holding it leave of it
-    Vec2 gravity_;
+    HeldFaces held_;                   ///< circles held on static faces for the rest of the step (few)
 };
 
 } // namespace

@@ -24,6 +24,9 @@
 #include <vector>
 
 using namespace rube;
+using rube::test::finiteState;
+using rube::test::mechanicalEnergy;
+using rube::test::weight;
 using namespace rube::game;
 using rube::test::RandomPlay;
 using rube::test::SceneRng;
@@ -55,14 +58,6 @@ std::vector<SceneDesc> shippedLevels() {
     return levels;
 }
 
-bool finiteState(const World& world) {
-    for (const Circle& c : world.circles())
-        if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angularVelocity)) return false;
-    for (const RigidBody& b : world.bodies())
-        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) return false;
-    return true;
-}
-
 double fastest(const World& world) {
     double v = 0.0;
     for (const Circle& c : world.circles())
@@ -70,32 +65,6 @@ double fastest(const World& world) {
     for (const RigidBody& b : world.bodies())
         if (b.motion == Motion::dynamic) v = std::max(v, b.velocity.length());
     return v;
-}
-
-/// E = sum 1/2 m v^2 + 1/2 I w^2 - m g.(p - p0) over the dynamic bodies, p0 the reference point.
-double mechanicalEnergy(const World& world, Vec2 reference) {
-    const Vec2 g = world.def().gravity;
-    double energy = 0.0;
-    const auto add = [&](double inverseMass, double inverseInertia, Vec2 p, Vec2 v, double w) {
-        const double m = 1.0 / inverseMass;
-        energy += 0.5 * m * v.lengthSquared() - m * g.dot(p - reference);
-        if (inverseInertia > 0.0) energy += 0.5 * w * w / inverseInertia;
-    };
-    for (const Circle& c : world.circles())
-        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) add(c.inverseMass, c.inverseInertia, c.position, c.velocity, c.angularVelocity);
-    for (const RigidBody& b : world.bodies())
-        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) add(b.inverseMass, b.inverseInertia, b.position, b.velocity, b.angularVelocity);
-    return energy;
-}
-
-/// sum m |g| over the dynamic bodies: the energy of lifting every body by one metre.
-double weight(const World& world) {
-    double w = 0.0;
-    for (const Circle& c : world.circles())
-        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) w += world.def().gravity.length() / c.inverseMass;
-    for (const RigidBody& b : world.bodies())
-        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) w += world.def().gravity.length() / b.inverseMass;
-    return w;
 }
 
 /// True when something in the play can add energy: a cannon, bomb, fan, magnet, rocket or balloon

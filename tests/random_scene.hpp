@@ -245,4 +245,40 @@ inline RandomScene makeRandomScene(std::uint64_t seed) {
     return scene;
 }
 
+/// True when every body's position, velocity, angle and spin are finite.
+inline bool finiteState(const World& world) {
+    for (const Circle& c : world.circles())
+        if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angle) || !std::isfinite(c.angularVelocity)) return false;
+    for (const RigidBody& b : world.bodies())
+        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) return false;
+    return true;
+}
+
+/// Kinetic plus potential energy of the dynamic bodies, the potential measured from `reference`:
+/// E = sum 1/2 m v^2 + 1/2 I w^2 - m g.(p - p0).
+inline double mechanicalEnergy(const World& world, Vec2 reference) {
+    const Vec2 g = world.def().gravity;
+    double energy = 0.0;
+    const auto add = [&](double inverseMass, double inverseInertia, Vec2 p, Vec2 v, double w) {
+        const double m = 1.0 / inverseMass;
+        energy += 0.5 * m * v.lengthSquared() - m * g.dot(p - reference);
+        if (inverseInertia > 0.0) energy += 0.5 * w * w / inverseInertia;
+    };
+    for (const Circle& c : world.circles())
+        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) add(c.inverseMass, c.inverseInertia, c.position, c.velocity, c.angularVelocity);
+    for (const RigidBody& b : world.bodies())
+        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) add(b.inverseMass, b.inverseInertia, b.position, b.velocity, b.angularVelocity);
+    return energy;
+}
+
+/// sum m |g| over the dynamic bodies: the energy of lifting every body by one metre.
+inline double weight(const World& world) {
+    double w = 0.0;
+    for (const Circle& c : world.circles())
+        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) w += world.def().gravity.length() / c.inverseMass;
+    for (const RigidBody& b : world.bodies())
+        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) w += world.def().gravity.length() / b.inverseMass;
+    return w;
+}
+
 } // namespace rube::test

@@ -12,6 +12,9 @@
 #include <string>
 
 using namespace rube;
+using rube::test::finiteState;
+using rube::test::mechanicalEnergy;
+using rube::test::weight;
 using rube::test::makeRandomScene;
 using rube::test::RandomScene;
 
@@ -25,44 +28,6 @@ int countFromEnvironment(const char* name, int fallback) {
     if (text == nullptr) return fallback;
     const int n = std::atoi(text);
     return n > 0 ? n : fallback;
-}
-
-bool finiteState(const World& world) {
-    for (const Circle& c : world.circles())
-        if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angle) || !std::isfinite(c.angularVelocity)) return false;
-    for (const RigidBody& b : world.bodies())
-        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) return false;
-    return true;
-}
-
-/// Kinetic plus potential energy of the dynamic bodies, the potential measured from the box's
-/// corner lowest along gravity, so it starts non-negative: E = sum 1/2 m v^2 + 1/2 I w^2 - m g.(p - p0).
-double mechanicalEnergy(const World& world, Vec2 lowest) {
-    const Vec2 g = world.def().gravity;
-    double energy = 0.0;
-    for (const Circle& c : world.circles()) {
-        if (c.motion != Motion::dynamic || c.inverseMass <= 0.0) continue;
-        const double m = 1.0 / c.inverseMass;
-        energy += 0.5 * m * c.velocity.lengthSquared() - m * g.dot(c.position - lowest);
-        if (c.inverseInertia > 0.0) energy += 0.5 * c.angularVelocity * c.angularVelocity / c.inverseInertia;
-    }
-    for (const RigidBody& b : world.bodies()) {
-        if (b.motion != Motion::dynamic || b.inverseMass <= 0.0) continue;
-        const double m = 1.0 / b.inverseMass;
-        energy += 0.5 * m * b.velocity.lengthSquared() - m * g.dot(b.position - lowest);
-        if (b.inverseInertia > 0.0) energy += 0.5 * b.angularVelocity * b.angularVelocity / b.inverseInertia;
-    }
-    return energy;
-}
-
-/// sum m |g| over the dynamic bodies: the energy of lifting every body by one metre.
-double weight(const World& world) {
-    double w = 0.0;
-    for (const Circle& c : world.circles())
-        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) w += world.def().gravity.length() / c.inverseMass;
-    for (const RigidBody& b : world.bodies())
-        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) w += world.def().gravity.length() / b.inverseMass;
-    return w;
 }
 
 struct Tally {

@@ -86,6 +86,7 @@ private:
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
     void findFriction(const StepContext& ctx);
+    void flyFreeCirclesExactly(const StepContext& ctx, double dt);
     std::span<const BoundingBox> bulletPaths(double dt);
 
     int circleCount_ = 0;
@@ -126,6 +127,7 @@ private:
     SleepIslands sleep_;
     std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
     std::vector<std::uint8_t> inFlight_;   // per circle: dynamic, and no contact pushed it this step
+    std::vector<std::uint8_t> inContact_;  // scratch: per circle, some contact (even speculative) lists it
 };
 
 std::span<const BoundingBox> SolverMethod::bulletPaths(double dt) {
@@ -324,6 +326,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
         }
     }
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
+    if (!hasRigid_) flyFreeCirclesExactly(ctx, dt);
     // Rigid bodies hold circles through their own contacts, which the count of a circle's contacts
     // does not see; bullets are bounced by the continuous pass.
     if (!hasRigid_) carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_, ctx.restingSpeed, ctx.def.gravity, dt, h);
@@ -333,6 +336,26 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     if (anyRotation_)
         for (const FrictionTerms& f : frictions_) tangentImpulses_.push_back(f.impulse);
     cache_.store(contacts_, tangentImpulses_, circleCount_, segmentCount_);
+}
+
+void SolverMethod::flyFreeCirclesExactly(const StepContext& ctx, double dt) {
+    // The substeps' semi-implicit Euler (v += g h, then x += v h) puts a falling circle at
+    // x0 + v0 t + g t (t + h) / 2: half a substep of gravity ahead of the exact parabola. A circle no
+    // contact lists (not even a speculative one) feels nothing but gravity within the step (fields,
+    // drag and ropes act between steps, in World; rigid bodies' steps are left alone), so it flies the
+    // exact method's free flight instead: x1 = x0 + v0 dt + g dt^2 / 2, v1 = v0 + g dt. Its flight
+    // then starts every bounce from the state as given, as the exact method's does.
+    inContact_.assign(isDynamic_.size(), 0);
+    for (const ContactConstraint& c : contacts_) {
+        inContact_[static_cast<std::size_t>(c.a)] = 1;
+        if (c.b < circleCount_) inContact_[static_cast<std::size_t>(c.b)] = 1;
+    }
+    const Vec2 g = ctx.def.gravity;
+    for (int i = 0; i < circleCount_; ++i) {
+        if (!isDynamic_[i] || inContact_[static_cast<std::size_t>(i)]) continue;
+        const Vec2 v0 = ctx.circles[static_cast<std::size_t>(i)].velocity;
+        bodies_[i] = {v0 + g * dt, v0 * dt + g * (0.5 * dt * dt)};
+    }
 }
 
 void SolverMethod::finish(StepContext& ctx, double dt) {

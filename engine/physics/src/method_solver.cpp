@@ -86,6 +86,7 @@ private:
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
     void findFriction(const StepContext& ctx);
+    void markWarmContacts();
     void flyFreeCirclesExactly(const StepContext& ctx, double dt);
     std::span<const BoundingBox> bulletPaths(double dt);
 
@@ -127,7 +128,7 @@ private:
     SleepIslands sleep_;
     std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
     std::vector<std::uint8_t> inFlight_;   // per circle: dynamic, and no contact pushed it this step
-    std::vector<std::uint8_t> inContact_;  // scratch: per circle, some contact (even speculative) lists it
+    std::vector<std::uint8_t> inContact_;  // scratch: per circle, some contact pushed it this step
 };
 
 std::span<const BoundingBox> SolverMethod::bulletPaths(double dt) {
@@ -309,6 +310,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     FrictionState frictionState{frictions_, frictionBodies_, omega_};
     const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
     if (hasRigid_) rigid_.bind(bodies_, anyRotation_ ? std::span<double>(omega_) : std::span<double>{}, ctx.circles);
+    if (!hasRigid_) markWarmContacts();
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
@@ -338,15 +340,29 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     cache_.store(contacts_, tangentImpulses_, circleCount_, segmentCount_);
 }
 
+void SolverMethod::markWarmContacts() {
+    // A contact that starts the step warm (pushing since the last step) may push without ever being
+    // marked as touching (ContactRecord::firstTouch): its circles are held, not in flight.
+    inContact_.assign(isDynamic_.size(), 0);
+    for (const ContactConstraint& c : contacts_) {
+        if (c.impulse <= 0.0) continue;
+        inContact_[static_cast<std::size_t>(c.a)] = 1;
+        if (c.b < circleCount_) inContact_[static_cast<std::size_t>(c.b)] = 1;
+    }
+}
+
 void SolverMethod::flyFreeCirclesExactly(const StepContext& ctx, double dt) {
     // The substeps' semi-implicit Euler (v += g h, then x += v h) puts a falling circle at
     // x0 + v0 t + g t (t + h) / 2: half a substep of gravity ahead of the exact parabola. A circle no
-    // contact lists (not even a speculative one) feels nothing but gravity within the step (fields,
-    // drag and ropes act between steps, in World; rigid bodies' steps are left alone), so it flies the
-    // exact method's free flight instead: x1 = x0 + v0 dt + g dt^2 / 2, v1 = v0 + g dt. Its flight
-    // then starts every bounce from the state as given, as the exact method's does.
-    inContact_.assign(isDynamic_.size(), 0);
-    for (const ContactConstraint& c : contacts_) {
+    // contact pushed this step (none warm at its start, none touching within it: its speculative
+    // contacts only watched) felt nothing but gravity within the step (fields, drag and ropes act
+    // between steps, in World; rigid bodies' steps are left alone), so it flies the exact method's
+    // free flight instead: x1 = x0 + v0 dt + g dt^2 / 2, v1 = v0 + g dt. Its flight then starts every
+    // bounce from the state as given, as the exact method's does. The substeps' path lies below the
+    // exact one by g t h / 2, so a floor it did not touch the exact path does not touch either.
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        if (records_[k].firstTouch < 0) continue;
+        const ContactConstraint& c = contacts_[k];
         inContact_[static_cast<std::size_t>(c.a)] = 1;
         if (c.b < circleCount_) inContact_[static_cast<std::size_t>(c.b)] = 1;
     }

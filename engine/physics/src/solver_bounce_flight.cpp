@@ -95,6 +95,9 @@ int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactReco
             r.firstTouch = -1;
             continue;
         }
+        // Flying away from the surface: no impulse to warm start next step's contact with (a warm
+        // contact would hold the circle on the substeps rather than the exact flight).
+        contacts[carry.contact].impulse = 0.0;
         // Where and when it touched: on the exact parabola p0 + v0 t + g t^2 / 2.
         const double t0 = r.impactTime;
         const Vec2 atImpact = circles[a].position + circles[a].velocity * t0 + gravity * (0.5 * t0 * t0);

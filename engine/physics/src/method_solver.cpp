@@ -86,6 +86,8 @@ private:
     void solve(const StepContext& ctx, double dt);
     void finish(StepContext& ctx, double dt);
     void findFriction(const StepContext& ctx);
+    void markWarmContacts();
+    void flyFreeCirclesExactly(const StepContext& ctx, double dt);
     std::span<const BoundingBox> bulletPaths(double dt);
 
     int circleCount_ = 0;
@@ -126,6 +128,7 @@ private:
     SleepIslands sleep_;
     std::vector<BoundingBox> bulletPaths_; // scratch: each bullet's box over its whole path this step
     std::vector<std::uint8_t> inFlight_;   // per circle: dynamic, and no contact pushed it this step
+    std::vector<std::uint8_t> inContact_;  // scratch: per circle, some contact pushed it this step
 };
 
 std::span<const BoundingBox> SolverMethod::bulletPaths(double dt) {
@@ -307,6 +310,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     FrictionState frictionState{frictions_, frictionBodies_, omega_};
     const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
     if (hasRigid_) rigid_.bind(bodies_, anyRotation_ ? std::span<double>(omega_) : std::span<double>{}, ctx.circles);
+    if (!hasRigid_) markWarmContacts();
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
@@ -324,6 +328,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
         }
     }
     if (hasRigid_) rigid_.applyRestitution(ctx.restingSpeed);
+    if (!hasRigid_) flyFreeCirclesExactly(ctx, dt);
     // Rigid bodies hold circles through their own contacts, which the count of a circle's contacts
     // does not see; bullets are bounced by the continuous pass.
     if (!hasRigid_) carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_, ctx.restingSpeed, ctx.def.gravity, dt, h);
@@ -333,6 +338,40 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     if (anyRotation_)
         for (const FrictionTerms& f : frictions_) tangentImpulses_.push_back(f.impulse);
     cache_.store(contacts_, tangentImpulses_, circleCount_, segmentCount_);
+}
+
+void SolverMethod::markWarmContacts() {
+    // A contact that starts the step warm (pushing since the last step) may push without ever being
+    // marked as touching (ContactRecord::firstTouch): its circles are held, not in flight.
+    inContact_.assign(isDynamic_.size(), 0);
+    for (const ContactConstraint& c : contacts_) {
+        if (c.impulse <= 0.0) continue;
+        inContact_[static_cast<std::size_t>(c.a)] = 1;
+        if (c.b < circleCount_) inContact_[static_cast<std::size_t>(c.b)] = 1;
+    }
+}
+
+void SolverMethod::flyFreeCirclesExactly(const StepContext& ctx, double dt) {
+    // The substeps' semi-implicit Euler (v += g h, then x += v h) puts a falling circle at
+    // x0 + v0 t + g t (t + h) / 2: half a substep of gravity ahead of the exact parabola. A circle no
+    // contact pushed this step (none warm at its start, none touching within it: its speculative
+    // contacts only watched) felt nothing but gravity within the step (fields, drag and ropes act
+    // between steps, in World; rigid bodies' steps are left alone), so it flies the exact method's
+    // free flight instead: x1 = x0 + v0 dt + g dt^2 / 2, v1 = v0 + g dt. Its flight then starts every
+    // bounce from the state as given, as the exact method's does. The substeps' path lies below the
+    // exact one by g t h / 2, so a floor it did not touch the exact path does not touch either.
+    for (std::size_t k = 0; k < contacts_.size(); ++k) {
+        if (records_[k].firstTouch < 0) continue;
+        const ContactConstraint& c = contacts_[k];
+        inContact_[static_cast<std::size_t>(c.a)] = 1;
+        if (c.b < circleCount_) inContact_[static_cast<std::size_t>(c.b)] = 1;
+    }
+    const Vec2 g = ctx.def.gravity;
+    for (int i = 0; i < circleCount_; ++i) {
+        if (!isDynamic_[i] || inContact_[static_cast<std::size_t>(i)]) continue;
+        const Vec2 v0 = ctx.circles[static_cast<std::size_t>(i)].velocity;
+        bodies_[i] = {v0 + g * dt, v0 * dt + g * (0.5 * dt * dt)};
+    }
 }
 
 void SolverMethod::finish(StepContext& ctx, double dt) {

@@ -39,31 +39,33 @@ int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactReco
         const double gn = gravity.dot(c.normal);
         const double vn = c.normal.dot(bodies[a].velocity - bodies[b].velocity);
         const double s = c.baseSeparation + c.normal.dot(bodies[a].displacement - bodies[b].displacement);
+        // The substeps (semi-implicit Euler, v += g h then x += v h) put the circle at x0 + v0 t +
+        // g t (t + h) / 2, half a substep of gravity ahead of the exact parabola x0 + v0 t + g t^2 / 2
+        // the exact method flies from the same state. A carried circle is put back on the exact
+        // parabola along the surface (its tangential displacement less g_t dt h / 2; its velocity
+        // v0 + g dt is exact) and given the normal state of the exact flight and bounce.
+        const Vec2 tangentialLead = (gravity - c.normal * gn) * (0.5 * dt * h);
         if (t0 > dt) {
             // Touching early in the next step: the last substep's speculative constraint (vn >= -s / h)
             // caught it up to h early, at the end of this step. Left in free flight instead, it is
-            // bounced at its time of impact next step: v.n = n.(v0 + g dt), gap = s0 + n.(v0 dt + g dt (dt + h) / 2).
+            // bounced at its time of impact next step: v.n = n.(v0 + g dt), gap = s0 + n.(v0 dt + g dt^2 / 2).
             const double normalVelocity = c.normal.dot(relative) + gn * dt;
-            const double gap = c.baseSeparation + c.normal.dot(relative) * dt + 0.5 * gn * dt * (dt + h);
+            const double gap = c.baseSeparation + c.normal.dot(relative) * dt + 0.5 * gn * dt * dt;
             if (gap < 0.0) continue;
             carryOf[a] = static_cast<int>(carries.size());
-            carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s), true});
+            carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s) - tangentialLead, true});
             continue;
         }
-        // The substeps (semi-implicit Euler, v += g h then x += v h) move the circle exactly along the
-        // parabola x0 + (v0 + g h/2) t + g t^2/2 at every substep's end: its state (x, v) is the
-        // continuous state (x, v + g h/2). The bounce is made on that continuous state, so a C = 1
-        // bounce keeps the flight's energy (its apex) exactly, and mapped back by - g h/2.
-        const double approach = -(c.normal.dot(relative) + gn * (t0 + 0.5 * h)); // u = -n.v(t0), continuous
+        // Reflected at t0 on the exact parabola from the state as given: u = -n.(v0 + g t0) (lecture 3,
+        // v.n -> C u), then free flight for tau = dt - t0 along n: v.n = C u + g.n tau, gap = C u tau + g.n tau^2 / 2.
+        const double approach = -(c.normal.dot(relative) + gn * t0);
         if (approach <= threshold) continue;
-        // Reflected at t0 (v.n -> C u, lecture 3), then free flight for tau = dt - t0 along n:
-        // v.n = C u + g.n tau, gap = C u tau + g.n tau^2 / 2.
         const double tau = dt - t0;
         const double gap = r.bounciness * approach * tau + 0.5 * gn * tau * tau;
         if (gap <= 0.0) continue; // back on the surface within the step: the end-of-step rule rests it
-        const double normalVelocity = r.bounciness * approach + gn * tau - 0.5 * gn * h;
+        const double normalVelocity = r.bounciness * approach + gn * tau;
         carryOf[a] = static_cast<int>(carries.size());
-        carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s), false});
+        carries.push_back({k, c.normal * (normalVelocity - vn), c.normal * (gap - s) - tangentialLead, false});
     }
     // A circle with any other contact (a speculative one: it pushed on nothing else) is near some
     // shape it could be carried into, or is one of a crowd (a pile's balls landing on its floor):
@@ -93,9 +95,12 @@ int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactReco
             r.firstTouch = -1;
             continue;
         }
-        // Where and when it touched: on the substeps' path p0 + v0 t + g t (t + h) / 2.
+        // Flying away from the surface: no impulse to warm start next step's contact with (a warm
+        // contact would hold the circle on the substeps rather than the exact flight).
+        contacts[carry.contact].impulse = 0.0;
+        // Where and when it touched: on the exact parabola p0 + v0 t + g t^2 / 2.
         const double t0 = r.impactTime;
-        const Vec2 atImpact = circles[a].position + circles[a].velocity * t0 + gravity * (0.5 * t0 * (t0 + h));
+        const Vec2 atImpact = circles[a].position + circles[a].velocity * t0 + gravity * (0.5 * t0 * t0);
         r.pointOfImpact = atImpact - c.normal * circles[a].radius;
         r.touchTime = t0;
         ++carried;

@@ -57,8 +57,9 @@ void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactR
         const Vec2 w = a.velocity - otherVelocity;
         // Slow pairs rest rather than bounce, and their normal turns little within a step: left as found.
         if (-c.normal.dot(w) <= restingSpeed) continue;
-        // Two dynamic circles fall alike; against infinite mass the circle alone falls. The substeps
-        // put it at q0 + w t + g t (t + h) / 2 at time t (semi-implicit Euler).
+        // Two dynamic circles fall alike; against infinite mass the circle alone falls, along the exact
+        // parabola q0 + w t + g t^2 / 2 from the state as given (a lone bounce is flown on it,
+        // carryPastImpact; the substeps run half a substep of gravity ahead of it, g t h / 2).
         const Vec2 fall = inverseMass[static_cast<std::size_t>(c.b)] > 0.0 ? Vec2{} : gravity;
         const Vec2 q0 = otherIsCircle ? a.position - circles[static_cast<std::size_t>(c.b)].position : a.position;
         const double reach = a.radius + (otherIsCircle ? circles[static_cast<std::size_t>(c.b)].radius : seg->radius);
@@ -68,7 +69,7 @@ void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactR
         double t = horizon;
         double fraction = -1.0;
         for (int pass = 0; pass < kPathPasses; ++pass) {
-            const Vec2 move = (w + fall * (0.5 * (t + h))) * horizon;
+            const Vec2 move = (w + fall * (0.5 * t)) * horizon;
             fraction = otherIsCircle ? sweepPointCircle(q0, move, Vec2{}, reach) : sweepPointCapsule(q0, move, seg->a, seg->b, reach);
             if (fraction < 0.0) break;
             t = fraction * horizon;
@@ -76,8 +77,8 @@ void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactR
         // Touching within the look-ahead: aim at the time of impact. Not touching: at the time of nearest
         // approach within the look-ahead, so that the start normal's linear gap, shorter than the true one
         // off the line of centres, cannot catch a pair that passes by or touches only later.
-        if (fraction < 0.0) t = nearestApproach(q0, (w + fall * (0.5 * (horizon + h))) * horizon, otherIsCircle ? nullptr : seg) * horizon;
-        const Vec2 atImpact = q0 + (w + fall * (0.5 * ((fraction < 0.0 ? horizon : t) + h))) * t;
+        if (fraction < 0.0) t = nearestApproach(q0, (w + fall * (0.5 * horizon)) * horizon, otherIsCircle ? nullptr : seg) * horizon;
+        const Vec2 atImpact = q0 + (w + fall * (0.5 * (fraction < 0.0 ? horizon : t))) * t;
         double along = 0.0;
         const Vec2 feature = otherIsCircle ? Vec2{} : closestOnSegment(atImpact, seg->a, seg->b, along);
         const Vec2 away = atImpact - feature;

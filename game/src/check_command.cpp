@@ -7,8 +7,8 @@
 
 namespace rube::game {
 
-int checkScenes(std::span<const std::string> files, std::ostream& out, std::ostream& err) {
-    int status = 0;
+ExitCode checkScenes(std::span<const std::string> files, std::ostream& out, std::ostream& err) {
+    ExitCode status = ExitCode::ok;
     for (const std::string& file : files) {
         const SceneLoad load = loadSceneFile(file);
         if (load.ok()) {
@@ -16,7 +16,7 @@ int checkScenes(std::span<const std::string> files, std::ostream& out, std::ostr
             continue;
         }
         for (const SceneError& error : load.errors) err << error.format() << '\n';
-        status = 2;
+        status = ExitCode::badInput;
     }
     return status;
 }

@@ -120,15 +120,15 @@ void ProgressLine::update(std::int64_t frames, double seconds) {
 }
 
 std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
-                                                 std::ostream& err, std::string_view who, int& exitStatus) {
+                                                 std::ostream& err, std::string_view who, ExitCode& exitStatus) {
     try {
         return std::make_unique<FrameRecorder>(folder, size);
     } catch (const OutputFolderError& e) {
         err << who << ": " << e.what() << '\n';
-        exitStatus = 2;
+        exitStatus = ExitCode::badInput;
     } catch (const std::exception& e) {
         err << who << ": cannot render: " << e.what() << '\n';
-        exitStatus = 1;
+        exitStatus = ExitCode::failed;
     }
     return nullptr;
 }

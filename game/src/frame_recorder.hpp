@@ -2,6 +2,7 @@
 /// FrameRecorder: renders draw lists offscreen and writes them as numbered PNG frames, the PNG
 /// encoding running on the writer's thread while the caller simulates and draws the next frame.
 
+#include "exit_codes.hpp"
 #include "out_folder_lock.hpp"
 
 #include "rube/render/camera.hpp"
@@ -109,9 +110,9 @@ private:
 };
 
 /// Opens a FrameRecorder for the command line: on failure says why in one line on `err` (after
-/// `who`, e.g. "rube run") and sets `exitStatus` to 2 for a folder that cannot be written (bad
-/// input) or 1 when no GL context can be made; returns null then.
+/// `who`, e.g. "rube run") and sets `exitStatus` to badInput for a folder that cannot be written
+/// or failed when no GL context can be made; returns null then.
 std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
-                                                 std::ostream& err, std::string_view who, int& exitStatus);
+                                                 std::ostream& err, std::string_view who, ExitCode& exitStatus);
 
 } // namespace rube::game

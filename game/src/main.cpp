@@ -1,5 +1,7 @@
-// The `rube` command: parses the command line and hands over to `run` or `check`.
+// The `rube` command: one class per subcommand sets up its options and runs it; main() only
+// parses the command line and hands over to the subcommand chosen.
 #include "check_command.hpp"
+#include "exit_codes.hpp"
 #include "play_window.hpp"
 #include "run_command.hpp"
 
@@ -11,13 +13,14 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
 namespace {
 
-// Exit status for bad input or usage; CLI11's own parse-error codes (105, 106, ...) are mapped to it.
-constexpr int kBadInput = 2;
+using rube::game::ExitCode;
 
 constexpr const char* kRunFooter =
     "Prints: scene, method, steps, simulated time, wall time of the physics alone, impacts,\n"
@@ -85,9 +88,9 @@ constexpr const char* kMainFooter =
     "Exit status: 0 ok, 1 a run failed, 2 bad input or usage (every message is one line on stderr).";
 
 // Usage errors are one line on stderr, pointing at the help that explains the option.
-int usageError(const std::string& message, const std::string& help) {
+ExitCode usageError(const std::string& message, const std::string& help) {
     std::cerr << "rube: " << message << " (see '" << help << "')\n";
-    return kBadInput;
+    return ExitCode::badInput;
 }
 
 // CLI11 messages are one line already; this keeps them so if a future version adds a line break.
@@ -141,6 +144,178 @@ std::string frameSizeError(const std::string& text) {
     return "expected WxH in pixels, each from 1 to " + std::to_string(rube::game::kMaxFrameSide) + ", got '" + text + "'";
 }
 
+// CLI11 keeps pointers to the fields it fills, so a command is made in place and never copied.
+class Command {
+public:
+    Command() = default;
+    Command(const Command&) = delete;
+    Command& operator=(const Command&) = delete;
+};
+
+// `rube run SCENE`: the options, and the checks between them that CLI11 is not told of.
+class RunCommand : Command {
+public:
+    explicit RunCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run();
+
+private:
+    CLI::App* command_ = nullptr;
+    rube::game::RunOptions options_;
+    std::int64_t steps_ = 0;
+    std::int64_t frames_ = 0;
+    std::string size_ = "1280x720";
+    CLI::Option* stepsOption_ = nullptr;
+    CLI::Option* outOption_ = nullptr;
+    CLI::Option* everyOption_ = nullptr;
+    CLI::Option* framesOption_ = nullptr;
+    CLI::Option* sizeOption_ = nullptr;
+    std::vector<CLI::Option*> needOut_; // the options that only mean something with --out
+};
+
+RunCommand::RunCommand(CLI::App& app) {
+    command_ = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
+    command_->footer(kRunFooter);
+    command_->add_option("scene", options_.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
+    command_->add_option("--script", options_.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
+        ->type_name("FILE");
+    command_->add_flag("--no-render", options_.noRender, "Run headless: no GL context and no frames (summary and --trace)");
+    stepsOption_ = command_->add_option("--steps", steps_, "Number of time steps to simulate (0 or more)")
+                       ->type_name("N")
+                       ->check(CLI::Validator(stepCount, ""));
+    command_->add_option("--trace", options_.trace, "Write every dynamic body's state at every step to this CSV file")
+        ->type_name("FILE");
+    command_->add_option("--method", options_.method,
+                         "Time-step method, overriding the scene's: discrete, turn-based, exact, solver or auto")
+        ->type_name("NAME");
+    // --out and the options that only mean something with it are checked after parsing, not
+    // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
+    outOption_ = command_->add_option("--out", options_.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
+                     ->type_name("DIR");
+    everyOption_ = command_->add_option("--every", options_.every, "Steps between frames (default 1: every step)")
+                       ->type_name("K")
+                       ->check(countFromOne("steps"));
+    framesOption_ = command_->add_option("--frames", frames_, "Frames to write, frame 0 included (default: steps / K + 1)")
+                        ->type_name("N")
+                        ->check(countFromOne("frames"));
+    sizeOption_ = command_->add_option("--size", size_, "Frame size in pixels, each side 1 to 8192 (default 1280x720)")
+                      ->type_name("WxH")
+                      ->check(CLI::Validator(frameSizeError, ""));
+    needOut_ = {
+        everyOption_,
+        framesOption_,
+        sizeOption_,
+        command_->add_flag("--trails", options_.trails, "Draw each dynamic ball's path over the last 2 s (debug key D)"),
+        command_->add_flag("--debug-impacts", options_.debugImpacts,
+                           "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
+    };
+}
+
+ExitCode RunCommand::run() {
+    if (*outOption_ && options_.noRender) return usageError("--no-render excludes --out", "rube run --help");
+    if (*outOption_ && options_.out.empty()) return usageError("--out: expected a folder, got ''", "rube run --help");
+    for (const CLI::Option* option : needOut_) {
+        if (*option && !*outOption_) return usageError(option->get_name() + " requires --out", "rube run --help");
+    }
+    if (*stepsOption_) options_.steps = steps_;
+    if (*framesOption_) options_.frames = frames_;
+    options_.everyGiven = static_cast<bool>(*everyOption_);
+    options_.sizeGiven = static_cast<bool>(*sizeOption_);
+    options_.size = *parseFrameSize(size_); // the validator has accepted it, or it is the default
+    options_.progress = ::isatty(STDERR_FILENO) == 1;
+    return rube::game::runScene(options_, std::cout, std::cerr);
+}
+
+// `rube play LEVEL`: the window's options.
+class PlayCommand : Command {
+public:
+    explicit PlayCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run();
+
+private:
+    CLI::App* command_ = nullptr;
+    rube::game::PlayOptions options_;
+    std::string size_ = "1280x720";
+    std::int64_t quitAfter_ = 0;
+    bool noVsync_ = false;
+    CLI::Option* sizeOption_ = nullptr;
+    CLI::Option* quitAfterOption_ = nullptr;
+};
+
+PlayCommand::PlayCommand(CLI::App& app) {
+    command_ = app.add_subcommand("play", "Play a level in a window with the mouse and keys; optionally record it as a script");
+    command_->footer(kPlayFooter);
+    command_->add_option("level", options_.level, "The level file (.toml) to play")->required()->type_name("LEVEL");
+    command_->add_option("--script", options_.script, "Start from this script: its placements and aims; its other actions play as the machine runs")->type_name("FILE");
+    command_->add_option("--record", options_.record, "When the session ends, write it as a script that 'rube run --script' replays")
+        ->type_name("FILE");
+    sizeOption_ = command_->add_option("--size", size_, "Level area in pixels, as rube run's frames (default 1280x720)")
+                      ->type_name("WxH")
+                      ->check(CLI::Validator(frameSizeError, ""));
+    command_->add_flag("--run", options_.runAtOnce, "Start the machine at once, as if Space were pressed");
+    quitAfterOption_ = command_->add_option("--quit-after", quitAfter_, "Close the window N frames after the machine starts")
+                           ->type_name("N")
+                           ->check(countFromOne("frames"));
+    command_->add_option("--steps-per-frame", options_.stepsPerFrame, "Take K steps per frame drawn instead of following real time")
+        ->type_name("K")
+        ->check(countFromOne("steps"));
+    command_->add_flag("--no-vsync", noVsync_, "Draw as fast as possible instead of at the display's refresh (for measuring)");
+}
+
+ExitCode PlayCommand::run() {
+    if (*quitAfterOption_) options_.quitAfter = quitAfter_;
+    if (*sizeOption_) options_.size = *parseFrameSize(size_); // the validator has accepted it
+    options_.vsync = !noVsync_;
+    return rube::game::playInWindow(options_, std::cout, std::cerr);
+}
+
+// `rube check FILE...`: the files, nothing else.
+class CheckCommand : Command {
+public:
+    explicit CheckCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run() const { return rube::game::checkScenes(files_, std::cout, std::cerr); }
+
+private:
+    CLI::App* command_ = nullptr;
+    std::vector<std::string> files_;
+};
+
+CheckCommand::CheckCommand(CLI::App& app) {
+    command_ = app.add_subcommand("check", "Validate scene files and report every error as file:line:col: message");
+    command_->footer(kCheckFooter);
+    command_->add_option("files", files_, "Scene files (.toml) to validate")->required()->type_name("FILE");
+}
+
+// Parses the command line into the commands' fields. Returns the status to exit with when there
+// is nothing to run (--help, --version, a usage error), nothing when a command is to run.
+std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
+    // CLI11 would call a misspelt command a missing one ("A subcommand is required").
+    if (argc > 1 && argv[1][0] != '-') {
+        const auto commands = std::as_const(app).get_subcommands([](const CLI::App*) { return true; });
+        if (std::none_of(commands.begin(), commands.end(), [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
+            std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play and check (see 'rube --help')\n";
+            return ExitCode::badInput;
+        }
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        // --help and --version come here too, with CLI11's exit code 0: let CLI11 print them.
+        if (e.get_exit_code() == 0) {
+            app.exit(e);
+            return ExitCode::ok;
+        }
+        // CLI11's own codes for parse errors (105, 106, ...) are all bad usage here. Point at the
+        // help of the command that was being parsed, where the options are explained.
+        const auto chosen = app.get_subcommands();
+        const std::string help = chosen.empty() ? "rube --help" : "rube " + chosen.front()->get_name() + " --help";
+        return usageError(oneLine(e.what()), help);
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -151,110 +326,12 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "rube " RUBE_VERSION);
     app.require_subcommand(1);
     app.get_formatter()->column_width(26);
+    RunCommand run(app);
+    CheckCommand check(app);
+    PlayCommand play(app);
 
-    rube::game::RunOptions run;
-    std::int64_t steps = 0;
-    std::int64_t frames = 0;
-    std::string size = "1280x720";
-    CLI::App* runCommand = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
-    runCommand->footer(kRunFooter);
-    runCommand->add_option("scene", run.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
-    runCommand->add_option("--script", run.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
-        ->type_name("FILE");
-    runCommand->add_flag("--no-render", run.noRender, "Run headless: no GL context and no frames (summary and --trace)");
-    CLI::Option* stepsOption = runCommand->add_option("--steps", steps, "Number of time steps to simulate (0 or more)")
-                                   ->type_name("N")
-                                   ->check(CLI::Validator(stepCount, ""));
-    runCommand->add_option("--trace", run.trace, "Write every dynamic body's state at every step to this CSV file")
-        ->type_name("FILE");
-    runCommand->add_option("--method", run.method,
-                           "Time-step method, overriding the scene's: discrete, turn-based, exact, solver or auto")
-        ->type_name("NAME");
-    // --out and the options that only mean something with it are checked after parsing, not
-    // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
-    CLI::Option* outOption =
-        runCommand->add_option("--out", run.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
-            ->type_name("DIR");
-    CLI::Option* everyOption = runCommand->add_option("--every", run.every, "Steps between frames (default 1: every step)")
-                                   ->type_name("K")
-                                   ->check(countFromOne("steps"));
-    CLI::Option* framesOption = runCommand->add_option("--frames", frames, "Frames to write, frame 0 included (default: steps / K + 1)")
-                                    ->type_name("N")
-                                    ->check(countFromOne("frames"));
-    const std::vector<CLI::Option*> frameOptions = {
-        everyOption,
-        framesOption,
-        runCommand->add_option("--size", size, "Frame size in pixels, each side 1 to 8192 (default 1280x720)")
-            ->type_name("WxH")
-            ->check(CLI::Validator(frameSizeError, "")),
-        runCommand->add_flag("--trails", run.trails, "Draw each dynamic ball's path over the last 2 s (debug key D)"),
-        runCommand->add_flag("--debug-impacts", run.debugImpacts,
-                             "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
-    };
-
-    std::vector<std::string> files;
-    CLI::App* checkCommand = app.add_subcommand("check", "Validate scene files and report every error as file:line:col: message");
-    checkCommand->footer(kCheckFooter);
-    checkCommand->add_option("files", files, "Scene files (.toml) to validate")->required()->type_name("FILE");
-
-    rube::game::PlayOptions play;
-    std::string playSize = "1280x720";
-    std::int64_t quitAfter = 0;
-    CLI::App* playCommand = app.add_subcommand("play", "Play a level in a window with the mouse and keys; optionally record it as a script");
-    playCommand->footer(kPlayFooter);
-    playCommand->add_option("level", play.level, "The level file (.toml) to play")->required()->type_name("LEVEL");
-    playCommand->add_option("--script", play.script, "Start from this script: its placements and aims; its other actions play as the machine runs")->type_name("FILE");
-    playCommand->add_option("--record", play.record, "When the session ends, write it as a script that 'rube run --script' replays")
-        ->type_name("FILE");
-    CLI::Option* playSizeOption = playCommand->add_option("--size", playSize, "Level area in pixels, as rube run's frames (default 1280x720)")
-                                      ->type_name("WxH")
-                                      ->check(CLI::Validator(frameSizeError, ""));
-    playCommand->add_flag("--run", play.runAtOnce, "Start the machine at once, as if Space were pressed");
-    CLI::Option* quitAfterOption = playCommand->add_option("--quit-after", quitAfter, "Close the window N frames after the machine starts")
-                                       ->type_name("N")
-                                       ->check(countFromOne("frames"));
-    playCommand->add_option("--steps-per-frame", play.stepsPerFrame, "Take K steps per frame drawn instead of following real time")
-        ->type_name("K")
-        ->check(countFromOne("steps"));
-    bool noVsync = false;
-    playCommand->add_flag("--no-vsync", noVsync, "Draw as fast as possible instead of at the display's refresh (for measuring)");
-
-    // CLI11 would call a misspelt command a missing one ("A subcommand is required").
-    if (argc > 1 && argv[1][0] != '-' && !runCommand->check_name(argv[1]) && !checkCommand->check_name(argv[1]) &&
-        !playCommand->check_name(argv[1])) {
-        std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play and check (see 'rube --help')\n";
-        return kBadInput;
-    }
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        // --help and --version come here too, with exit code 0: let CLI11 print them.
-        if (e.get_exit_code() == 0) return app.exit(e);
-        // Point at the help of the command that was being parsed, where the options are explained.
-        const auto chosen = app.get_subcommands();
-        const std::string help = chosen.empty() ? "rube --help" : "rube " + chosen.front()->get_name() + " --help";
-        return usageError(oneLine(e.what()), help);
-    }
-
-    if (*runCommand) {
-        if (*outOption && run.noRender) return usageError("--no-render excludes --out", "rube run --help");
-        if (*outOption && run.out.empty()) return usageError("--out: expected a folder, got ''", "rube run --help");
-        for (const CLI::Option* option : frameOptions) {
-            if (*option && !*outOption) return usageError(option->get_name() + " requires --out", "rube run --help");
-        }
-        if (*stepsOption) run.steps = steps;
-        if (*framesOption) run.frames = frames;
-        run.everyGiven = static_cast<bool>(*everyOption);
-        run.sizeGiven = static_cast<bool>(*frameOptions[2]);
-        run.size = *parseFrameSize(size); // the validator has accepted it
-        run.progress = ::isatty(STDERR_FILENO) == 1;
-        return rube::game::runScene(run, std::cout, std::cerr);
-    }
-    if (*playCommand) {
-        if (*quitAfterOption) play.quitAfter = quitAfter;
-        if (*playSizeOption) play.size = *parseFrameSize(playSize);
-        play.vsync = !noVsync;
-        return rube::game::playInWindow(play, std::cout, std::cerr);
-    }
-    return rube::game::checkScenes(files, std::cout, std::cerr);
+    if (const std::optional<ExitCode> done = parseCommandLine(app, argc, argv)) return rube::game::exitStatus(*done);
+    if (run.chosen()) return rube::game::exitStatus(run.run());
+    if (play.chosen()) return rube::game::exitStatus(play.run());
+    return rube::game::exitStatus(check.run());
 }

@@ -8,6 +8,7 @@
 #include "scene_errors.hpp"
 #include "scene_framing.hpp"
 #include "script_file.hpp"
+#include "trace_writer.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -103,13 +104,13 @@ std::string takeAction(const Action& a, LevelRun& run) {
     return "";
 }
 
-int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& out, std::ostream& err) {
+ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& out, std::ostream& err) {
     ScriptDesc script;
     if (!options.script.empty()) {
         ScriptLoad load = loadScriptFile(options.script, level);
         if (!load.script) {
             err << load.errors.front().format() << '\n';
-            return 2;
+            return ExitCode::badInput;
         }
         script = std::move(*load.script);
     }
@@ -122,12 +123,19 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     const std::int64_t every = options.everyGiven ? options.every : script.every.value_or(options.every);
     const render::FrameSize size = options.sizeGiven ? options.size : script.size.value_or(options.size);
 
+    // The trace is opened after the script is read, so a bad script is reported as such, and
+    // before the frames: the temporary goes with `trace` if the folder is refused.
+    TraceWriter trace;
+    if (std::string error; !options.trace.empty() && !trace.open(options.trace, error)) {
+        err << error << '\n';
+        return ExitCode::badInput;
+    }
     std::unique_ptr<FrameRecorder> recorder;
     std::unique_ptr<LevelView> view;
     render::DrawList list;
     std::int64_t framesWritten = 0;
     if (!options.out.empty()) {
-        int status = 0;
+        ExitCode status = ExitCode::ok;
         recorder = openFrameRecorder(options.out, size, err, "rube run", status);
         if (!recorder) return status;
         view = std::make_unique<LevelView>(level.name, sceneCamera(frameScene(level, run.world()), size), size);
@@ -143,6 +151,7 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     InterruptGuard guard;
     const std::int64_t tail = static_cast<std::int64_t>(std::ceil(kAfterGoalSeconds / dt));
     try {
+        trace.writeState(run.world()); // step 0: the initial state
         for (std::int64_t i = 0;; ++i) {
             for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
                 if (const std::string why = takeAction(script.actions[next], run); !why.empty())
@@ -151,11 +160,12 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
             if (i % every == 0) record();
             if (i >= steps || (run.goalFrame() && i >= *run.goalFrame() + tail) || interrupted()) break;
             run.step();
+            trace.writeState(run.world());
         }
         if (recorder) recorder->finish();
     } catch (const std::exception& e) {
         err << "rube run: " << e.what() << '\n';
-        return 1;
+        return ExitCode::failed;
     }
 
     std::vector<std::pair<std::string, bool>> judged;
@@ -170,7 +180,12 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     if (!options.out.empty() &&
         !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged, signal), reason)) {
         err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << ": " << reason << '\n';
-        return 1;
+        return ExitCode::failed;
+    }
+    // An interrupted run's trace is discarded (by `trace`), as a scene's is.
+    if (signal.empty() && !options.trace.empty() && !trace.commit(reason)) {
+        err << reason << '\n';
+        return ExitCode::failed;
     }
     out << "level:            " << level.name << '\n';
     out << "method:           " << methodDescription(run.world()) << '\n';
@@ -180,22 +195,23 @@ int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& o
     out << "goal:             " << (run.goalFrame() ? "reached at frame " + std::to_string(*run.goalFrame()) : std::string("not reached")) << '\n';
     out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
+    if (signal.empty() && !options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
     if (recorder) out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
     if (!signal.empty()) {
         // One line, not the expectations the cut-short run could not meet.
         out << "interrupted:      by " << signal << " at frame " << run.frame() << '\n';
         err << "rube run: interrupted by " << signal << " at frame " << run.frame()
             << (recorder ? "; " + std::to_string(framesWritten) + " frames written" : std::string()) << '\n';
-        return 1;
+        return ExitCode::failed;
     }
     for (const std::string& failure : failures) err << failure << '\n';
     if (!run.goalFrame() && level.level.goal) err << "rube run: goal not reached: " << level.level.goal->text << '\n';
     // Issue 27: levels as scenes, a run whose physics went non-finite fails (it was silent).
     if (const std::string why = unstableStateMessage(run.world()); !why.empty()) {
         err << "rube run: " << why << '\n';
-        return 1;
+        return ExitCode::failed;
     }
-    return failures.empty() && (run.goalFrame() || !level.level.goal) ? 0 : 1;
+    return failures.empty() && (run.goalFrame() || !level.level.goal) ? ExitCode::ok : ExitCode::failed;
 }
 
 } // namespace rube::game

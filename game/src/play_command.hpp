@@ -10,8 +10,8 @@
 namespace rube::game {
 
 /// Plays `level` as `options` say (options.script may be empty) and returns the exit status:
-/// 0 the goal was reached and every expectation met, 1 it was not or one failed (each is named
-/// on `err`), 2 bad input (the script, a placement, the output folder).
-int playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& out, std::ostream& err);
+/// ok when the goal was reached and every expectation met, failed when it was not or one failed
+/// (each is named on `err`), badInput for the script, a placement or the output folder.
+ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostream& out, std::ostream& err);
 
 } // namespace rube::game

@@ -31,24 +31,24 @@ bool hasDisplay() {
 
 } // namespace
 
-int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err) {
+ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err) {
     const SceneLoad load = loadSceneFile(options.level);
     if (!load.ok()) {
         err << load.errors.front().format() << '\n';
-        return 2;
+        return ExitCode::badInput;
     }
     const SceneDesc& level = *load.scene;
     if (!level.level.isLevel()) {
         err << "rube play: " << options.level << " is a physics scene, not a level (it has no items, inventory or goal): watch it with 'rube run "
             << options.level << " --out DIR'\n";
-        return 2;
+        return ExitCode::badInput;
     }
     std::optional<ScriptDesc> script;
     if (!options.script.empty()) {
         ScriptLoad loaded = loadScriptFile(options.script, level);
         if (!loaded.script) {
             err << loaded.errors.front().format() << '\n';
-            return 2;
+            return ExitCode::badInput;
         }
         script = std::move(loaded.script);
     }
@@ -56,16 +56,16 @@ int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& er
         const std::filesystem::path folder = std::filesystem::absolute(options.record).parent_path();
         if (!std::filesystem::is_directory(folder)) {
             err << "rube play: --record " << options.record << ": the folder " << folder.string() << " does not exist\n";
-            return 2;
+            return ExitCode::badInput;
         }
         if (std::filesystem::is_directory(options.record)) {
             err << "rube play: --record " << options.record << ": is a folder; give a file name such as play.toml\n";
-            return 2;
+            return ExitCode::badInput;
         }
     }
     if (!hasDisplay()) {
         err << "rube play: no display (DISPLAY is not set): " << noWindowAdvice(options) << '\n';
-        return 1;
+        return ExitCode::failed;
     }
 
     PlaySession session(level, options.level, options.size);
@@ -78,7 +78,7 @@ int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& er
         window = render::createWindowContext(session.windowSize(), windowOptions);
     } catch (const std::exception& e) {
         err << "rube play: cannot open a window (" << e.what() << "): " << noWindowAdvice(options) << '\n';
-        return 1;
+        return ExitCode::failed;
     }
     std::int64_t framesDrawn = 0;
     std::int64_t framesRunning = 0;
@@ -132,12 +132,12 @@ int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& er
     if (!options.record.empty()) {
         if (std::string reason; !writeTextFileAtomically(options.record, session.recordedScript(), reason)) {
             err << "rube play: cannot write " << options.record << ": " << reason << '\n';
-            return 1;
+            return ExitCode::failed;
         }
         out << "recorded:         " << options.record << " (replay: rube run " << options.level << " --script " << options.record
             << " --out DIR)\n";
     }
-    return 0;
+    return ExitCode::ok;
 }
 
 } // namespace rube::game

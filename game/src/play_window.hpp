@@ -2,6 +2,8 @@
 /// `rube play LEVEL`: the level in a GLFW window, played by hand with the mouse and keys; what the
 /// player does can be recorded as a script that `rube run` replays off-screen to the same frames.
 
+#include "exit_codes.hpp"
+
 #include "rube/render/camera.hpp"
 
 #include <cstdint>
@@ -24,8 +26,9 @@ struct PlayOptions {
 };
 
 /// Plays a level in a window until it is closed (or Escape, or --quit-after), then writes the
-/// recording and prints a summary. Returns 0 done, 1 no window could be opened (the message names
-/// the ways on without a display), 2 bad input (level, script, record path).
-int playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err);
+/// recording and prints a summary. Returns ok when done, failed when no window could be opened
+/// (the message names the ways on without a display) or the recording not written, badInput for
+/// the level, the script or the record path.
+ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace rube::game

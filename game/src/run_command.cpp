@@ -74,6 +74,15 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
     }
 }
 
+// The option given that a level's run has no use for, or "": a level runs by its own [world]
+// method, and is drawn as the game draws it (LevelView), without trails or impact marks.
+std::string unusedByLevels(const RunOptions& options) {
+    if (!options.method.empty()) return "--method";
+    if (options.trails) return "--trails";
+    if (options.debugImpacts) return "--debug-impacts";
+    return "";
+}
+
 // The most steps one run may take, however they are asked for.
 constexpr std::int64_t kMaxRunSteps = 1'000'000'000;
 
@@ -110,38 +119,45 @@ std::string methodDescription(const World& world) {
            ", exact share " + share + ")";
 }
 
-int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
+ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     std::optional<Method> method;
     if (!options.method.empty()) {
         method = methodFromName(options.method);
         if (!method) {
             err << "rube run: unknown method '" << options.method << "' (valid methods: " << validMethodNames() << ")\n";
-            return 2;
+            return ExitCode::badInput;
         }
     }
     const SceneLoad load = loadSceneFile(options.scene);
     if (!load.ok()) {
         // One line: the first error. `rube check` lists them all.
         err << load.errors.front().format() << '\n';
-        return 2;
+        return ExitCode::badInput;
     }
     const SceneDesc& scene = *load.scene;
+    // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
+    const bool asLevel = scene.level.isLevel() || !options.script.empty();
+    if (const std::string option = unusedByLevels(options); asLevel && !option.empty()) {
+        err << "rube run: " << option << " is for physics scenes, and " << options.scene
+            << (scene.level.isLevel() ? " is a level" : " is played as a level with --script")
+            << ": a level runs by its own [world] method and is drawn as the game draws it\n";
+        return ExitCode::badInput;
+    }
     if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
         err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules or pivots of "
             << options.scene << ": use auto or solver\n";
-        return 2;
+        return ExitCode::badInput;
     }
     if (const std::string why = methodBudgetRefusal(scene, method.value_or(scene.world.method)); !why.empty()) {
         err << "rube run: " << options.scene << ": " << why << '\n';
-        return 2;
+        return ExitCode::badInput;
     }
-    // A level (or any scene given a script) is played by the game's rules; a physics scene just runs.
-    if (scene.level.isLevel() || !options.script.empty()) return playLevel(options, scene, out, err);
+    if (asLevel) return playLevel(options, scene, out, err);
     // --steps is capped by its validator and a scene's duration when read; only --frames x --every is left.
     if (const std::int64_t steps = stepsOf(options, scene); steps > kMaxRunSteps) {
         err << "rube run: --frames " << *options.frames << " with --every " << options.every << " makes " << steps
             << " steps, more than the " << kMaxRunSteps << " a run may take" << '\n';
-        return 2;
+        return ExitCode::badInput;
     }
     const bool recording = !options.out.empty();
     if (!recording && !options.noRender)
@@ -152,7 +168,7 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     std::string error;
     if (!options.trace.empty() && !trace.open(options.trace, error)) {
         err << error << '\n';
-        return 2;
+        return ExitCode::badInput;
     }
     World world = buildWorld(scene);
     if (method) world.setMethod(*method);
@@ -163,7 +179,7 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
     // writes nothing (the trace's temporary file goes with `trace`).
     Recording frames;
     if (recording) {
-        int status = 0;
+        ExitCode status = ExitCode::ok;
         frames.recorder = openFrameRecorder(options.out, options.size, err, "rube run", status);
         if (!frames.recorder) return status;
         ViewOptions viewOptions;
@@ -202,7 +218,7 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         progress.reset();
         trace.discard();
         err << "rube run: " << e.what() << (options.trace.empty() ? "" : "; no trace written") << '\n';
-        return 1;
+        return ExitCode::failed;
     }
     progress.reset(); // wipes the progress line before anything else is printed
     if (interrupted()) {
@@ -216,20 +232,20 @@ int runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
         // The frames already written stay: each is whole (written under a temporary name, then renamed).
         if (recording) err << "; " << recorded.frames << " frames written";
         err << '\n';
-        return 1;
+        return ExitCode::failed;
     }
     if (!options.trace.empty() && !trace.commit(error)) {
         err << error << '\n';
-        return 1;
+        return ExitCode::failed;
     }
     printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), options, trace,
                  recording ? &recorded : nullptr);
     // Issue 27: a run whose physics went non-finite fails, whatever else it wrote.
     if (const std::string why = unstableStateMessage(world); !why.empty()) {
         err << "rube run: " << why << '\n';
-        return 1;
+        return ExitCode::failed;
     }
-    return 0;
+    return ExitCode::ok;
 }
 
 } // namespace rube::game

@@ -1,6 +1,8 @@
 #pragma once
 /// `rube run`: simulate a scene, print a summary, optionally write the trace and PNG frames.
 
+#include "exit_codes.hpp"
+
 #include "rube/render/camera.hpp"
 
 #include <cstdint>
@@ -44,9 +46,9 @@ struct RunOptions {
 /// The largest frame side --size accepts, in pixels: 8192 x 8192 RGBA is already 256 MB.
 inline constexpr int kMaxFrameSide = 8192;
 
-/// Runs a scene and returns the exit status: 0 done, 1 the run failed (the trace or a frame could
-/// not be written, no GL context, or it was interrupted), 2 bad input (unreadable scene, unknown
-/// method, trace or frame folder not creatable).
-int runScene(const RunOptions& options, std::ostream& out, std::ostream& err);
+/// Runs a scene and returns the exit status: ok, failed (the trace or a frame could not be written,
+/// no GL context, a state went non-finite, or it was interrupted), badInput (unreadable scene,
+/// unknown method, trace or frame folder not creatable).
+ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace rube::game

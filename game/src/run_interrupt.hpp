@@ -1,7 +1,7 @@
 #pragma once
 /// Ctrl-C (SIGINT) and a polite kill (SIGTERM) stop a run the same way: the step loop ends at the
 /// next step, temporaries are removed, the summary says the run was interrupted, and the exit
-/// status is 1. Scene runs and level runs both use it.
+/// status is ExitCode::failed (1). Scene runs and level runs both use it.
 
 #include <string>
 

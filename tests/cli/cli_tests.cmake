@@ -131,6 +131,15 @@ rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.t
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml:3:1: placement refused: ramp at [4, 2.5] is not wholly inside a placement zone (it spans [2.45, 2.45] to [5.55, 2.55])")
 rube_cli_test("level script with an unknown cannon" "run|${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
+# A level's run writes --trace as a scene's does: its one ball, steps + 1 rows (the goal at 266, then
+# 0.5 s at 1/100 s, so 316 steps). The options a level has no use for are refused, not ignored.
+rube_cli_test("level ramp --trace has steps + 1 rows" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--trace|${RUBE_CLI_OUT}/ramp.csv" 0
+              -DTRACE=${RUBE_CLI_OUT}/ramp.csv -DROWS=317 "-DSTDOUT_MATCH=steps: +316\n.*trace: +${RUBE_CLI_OUT}/ramp.csv \\(317 rows\\)")
+rube_cli_test("level with --method is refused" "run|${RUBE_GAME_LEVELS}/ramp.toml|--method|exact" 2
+              "-DSTDERR_LINE=rube run: --method is for physics scenes, and ${RUBE_GAME_LEVELS}/ramp.toml is a level: a level runs by its own [world] method and is drawn as the game draws it")
+rube_cli_test("level with --trails is refused" "run|${RUBE_GAME_LEVELS}/ramp.toml|--out|${frames}/trails|--trails" 2
+              -DFRAMES_DIR=${frames}/trails -DNO_FRAMES_DIR=ON
+              "-DSTDERR_LINE=rube run: --trails is for physics scenes, and ${RUBE_GAME_LEVELS}/ramp.toml is a level: a level runs by its own [world] method and is drawn as the game draws it")
 # The summary of a level's run: the goal frame, then every event in order with its frame and item.
 # The balloon's chain: the switch is hit and fires the cannon in one step, then the shot hits the target.
 rube_cli_test("level balloon summary.json has the goal frame and the hits"

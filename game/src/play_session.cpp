@@ -8,10 +8,8 @@
 #include "rube/render/palette.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace rube::game {
 
@@ -55,30 +53,8 @@ double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
     return p.distance(a + ab * t);
 }
 
-// The shortest text that reads back as the same double (std::to_chars' promise), so a recorded
-// position or angle replays bit for bit.
-std::string number(double value) {
-    char text[32];
-    const auto result = std::to_chars(text, text + sizeof text, value);
-    return std::string(text, result.ptr);
-}
-
-std::string tomlString(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
-void writeAction(std::ostream& out, const Action& a) {
-    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind) << "\"\nitem = " << tomlString(a.item) << '\n';
-    if (a.angle) out << "angle = " << number(a.angleDegrees) << '\n';
-    if (a.point) out << "point = [" << number(a.point->x) << ", " << number(a.point->y) << "]\n";
-    if (!a.target.empty()) out << "target = " << tomlString(a.target) << '\n';
-    if (a.kind == ActionKind::aim && !a.angle) out << "arc = \"" << (a.highArc ? "high" : "low") << "\"\n";
-}
+// Messages spell numbers as scripts do, so the bar says what a recording will hold.
+std::string number(double value) { return scriptNumber(value); }
 
 render::Camera levelCamera(const SceneDesc& level, render::FrameSize frame) {
     const LevelRun start(level, {});
@@ -525,26 +501,24 @@ void PlaySession::draw(render::DrawList& list) const {
 // The script
 
 std::string PlaySession::recordedScript() const {
-    std::ostringstream out;
-    out << "# Recorded by `rube play` at level '" << level_.name << "'. Replay it off-screen, frame for frame:\n"
-        << "#   rube run " << levelPath_ << " --script THIS_FILE --out DIR\n"
-        << "level = " << tomlString(level_.name) << "\n\n[capture]\nsize = [" << bar_.levelFrame().width << ", "
-        << bar_.levelFrame().height << "]\nevery = 1\n";
-    for (const Placement& p : placements_) {
-        out << "\n[[place]]\nkind = \"" << itemKindName(p.kind) << "\"\nposition = [" << number(p.position.x) << ", "
-            << number(p.position.y) << "]\n";
-        if (p.angleDegrees != 0.0) out << "angle = " << number(p.angleDegrees) << '\n';
-        if (!p.name.empty()) out << "name = " << tomlString(p.name) << '\n';
-    }
+    ScriptDesc script;
+    script.level = level_.name;
+    script.size = bar_.levelFrame();
+    script.every = 1;
+    script.placements = placements_;
     for (const auto& [item, action] : aims_) {
-        Action atStart = action;
-        atStart.frame = 0;
-        writeAction(out, atStart);
+        script.actions.push_back(action);
+        script.actions.back().frame = 0;
     }
-    for (const Action& a : actions_) writeAction(out, a);
-    if (run_ && run_->goalFrame())
-        out << "\n[[expect]]\ngoal = true\nbefore_frame = " << (*run_->goalFrame() + 1) << '\n';
-    return out.str();
+    script.actions.insert(script.actions.end(), actions_.begin(), actions_.end());
+    if (run_ && run_->goalFrame()) {
+        Expectation goal;
+        goal.kind = EventKind::goal;
+        goal.beforeFrame = *run_->goalFrame() + 1;
+        script.expectations.push_back(goal);
+    }
+    return writeScript(script, "# Recorded by `rube play` at level '" + level_.name + "'. Replay it off-screen, frame for frame:\n"
+                                   "#   rube run " + levelPath_ + " --script THIS_FILE --out DIR\n");
 }
 
 } // namespace rube::game

@@ -5,7 +5,10 @@
 #include "toml_reader.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cstdio>
 #include <numbers>
+#include <sstream>
 
 namespace rube::game {
 
@@ -225,6 +228,81 @@ ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& le
     const std::optional<std::string> text = readTextFile(file, error);
     if (!text) return {std::nullopt, {error}};
     return parseScript(*text, file.string(), level);
+}
+
+// The writer: what the reader above reads, key for key, so that writing and reading back gives the
+// same script (tests/script_file_test.cpp checks it on every shipped solution).
+
+std::string scriptNumber(double value) {
+    char text[32];
+    const auto result = std::to_chars(text, text + sizeof text, value);
+    return std::string(text, result.ptr);
+}
+
+namespace {
+
+// A TOML basic string: quotes and backslashes escaped, control characters as \uXXXX (TOML allows
+// none of them raw), so any name the reader accepted is written back readable.
+std::string tomlString(std::string_view text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (byte < 0x20 || byte == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
+            out += escaped;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+void writePlacement(std::ostream& out, const Placement& p) {
+    out << "\n[[place]]\nkind = \"" << itemKindName(p.kind) << "\"\nposition = [" << scriptNumber(p.position.x) << ", "
+        << scriptNumber(p.position.y) << "]\n";
+    if (p.angleDegrees != 0.0) out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
+    if (!p.name.empty()) out << "name = " << tomlString(p.name) << '\n';
+}
+
+void writeAction(std::ostream& out, const Action& a) {
+    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind) << "\"\nitem = " << tomlString(a.item) << '\n';
+    if (a.angle) out << "angle = " << scriptNumber(a.angleDegrees) << '\n';
+    if (a.point) out << "point = [" << scriptNumber(a.point->x) << ", " << scriptNumber(a.point->y) << "]\n";
+    if (!a.target.empty()) out << "target = " << tomlString(a.target) << '\n';
+    // An aim at a point or item names its arc; one at an angle only when it was given one.
+    if (a.kind == ActionKind::aim && (!a.angle || a.highArc)) out << "arc = \"" << (a.highArc ? "high" : "low") << "\"\n";
+}
+
+void writeExpectation(std::ostream& out, const Expectation& e) {
+    out << "\n[[expect]]\n";
+    switch (e.kind) {
+    case EventKind::goal: out << "goal = true\n"; break;
+    case EventKind::hit: out << "hit = " << tomlString(e.item) << '\n'; break;
+    case EventKind::shot: out << "shot = " << tomlString(e.item) << '\n'; break;
+    case EventKind::explosion: out << "explosion = " << tomlString(e.item) << '\n'; break;
+    }
+    out << "before_frame = " << e.beforeFrame << '\n';
+}
+
+} // namespace
+
+std::string writeScript(const ScriptDesc& script, std::string_view header) {
+    std::ostringstream out;
+    out << header << "level = " << tomlString(script.level) << '\n';
+    if (script.steps) out << "steps = " << *script.steps << '\n';
+    if (script.size || script.every) {
+        out << "\n[capture]\n";
+        if (script.size) out << "size = [" << script.size->width << ", " << script.size->height << "]\n";
+        if (script.every) out << "every = " << *script.every << '\n';
+    }
+    for (const Placement& p : script.placements) writePlacement(out, p);
+    for (const Action& a : script.actions) writeAction(out, a);
+    for (const Expectation& e : script.expectations) writeExpectation(out, e);
+    return out.str();
 }
 
 } // namespace rube::game

@@ -75,4 +75,14 @@ ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& le
 /// The same from text; `fileName` is what errors are reported under.
 ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level);
 
+/// The shortest decimal that reads back as the same double (std::to_chars' promise), so a written
+/// position or angle replays bit for bit: 0.3, not 0.30000000000000004.
+std::string scriptNumber(double value);
+
+/// `script` as a script file that parseScript() reads back to the same script (source places
+/// aside): `level`, `steps`, [capture], then every [[place]], [[action]] and [[expect]] in order.
+/// Angles are written in the degrees the script was read or recorded in. `header` (comment lines,
+/// each ending in a newline) comes first.
+std::string writeScript(const ScriptDesc& script, std::string_view header = {});
+
 } // namespace rube::game

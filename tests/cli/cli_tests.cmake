@@ -131,6 +131,17 @@ rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.t
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml:3:1: placement refused: ramp at [4, 2.5] is not wholly inside a placement zone (it spans [2.45, 2.45] to [5.55, 2.55])")
 rube_cli_test("level script with an unknown cannon" "run|${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
+# The goal reached but an expectation missed is still a failed run (1), naming the expectation:
+# the ramp's ball reaches the flag at frame 266, so "before frame 100" cannot be met.
+set(early ${RUBE_CLI_OUT}/ramp-early.solution.toml)
+file(READ ${RUBE_GAME_LEVELS}/ramp.solution.toml early_text)
+file(WRITE ${early} "${early_text}\n[[expect]]\ngoal = true\nbefore_frame = 100\n")
+string(REGEX MATCHALL "\n" early_lines "${early_text}")
+list(LENGTH early_lines early_line)
+math(EXPR early_line "${early_line} + 2")
+rube_cli_test("level goal reached but an expectation missed" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${early}" 1
+              "-DSTDOUT_MATCH=goal: +reached at frame 266\n"
+              "-DSTDERR_LINE=${early}:${early_line}:1: expectation failed: goal reached before frame 100")
 # A level's run writes --trace as a scene's does: its one ball, steps + 1 rows (the goal at 266, then
 # 0.5 s at 1/100 s, so 316 steps). The options a level has no use for are refused, not ignored.
 rube_cli_test("level ramp --trace has steps + 1 rows" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--trace|${RUBE_CLI_OUT}/ramp.csv" 0

@@ -117,4 +117,7 @@ TEST_CASE("every key a script may hold is written back as it was read", "[level]
     checkRoundTrip("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n", "rope cut", rope);
     const SceneDesc ramp = loadLevel(kLevels / "ramp.toml");
     checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -29.5\n", "ramp turned", ramp);
+    // -0 keeps its sign (written as the integer 0 it would come back +0); a cannon aimed at -0 degrees.
+    checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -0.0\n", "ramp at -0", ramp);
+    checkRoundTrip("level = \"cannon-arc\"\n[[action]]\nframe = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = -0.0\n", "aim at -0", cannon);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <sstream>
@@ -234,6 +235,8 @@ ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& le
 // same script (tests/script_file_test.cpp checks it on every shipped solution).
 
 std::string scriptNumber(double value) {
+    // -0 would read back as the integer 0 and lose the sign that a bit-for-bit replay keeps.
+    if (value == 0.0 && std::signbit(value)) return "-0.0";
     char text[32];
     const auto result = std::to_chars(text, text + sizeof text, value);
     return std::string(text, result.ptr);
@@ -264,7 +267,7 @@ std::string tomlString(std::string_view text) {
 void writePlacement(std::ostream& out, const Placement& p) {
     out << "\n[[place]]\nkind = \"" << itemKindName(p.kind) << "\"\nposition = [" << scriptNumber(p.position.x) << ", "
         << scriptNumber(p.position.y) << "]\n";
-    if (p.angleDegrees != 0.0) out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
+    if (p.angleDegrees != 0.0 || std::signbit(p.angleDegrees)) out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
     if (!p.name.empty()) out << "name = " << tomlString(p.name) << '\n';
 }
 

@@ -76,7 +76,7 @@ ScriptLoad loadScriptFile(const std::filesystem::path& file, const SceneDesc& le
 ScriptLoad parseScript(std::string_view text, const std::string& fileName, const SceneDesc& level);
 
 /// The shortest decimal that reads back as the same double (std::to_chars' promise), so a written
-/// position or angle replays bit for bit: 0.3, not 0.30000000000000004.
+/// position or angle replays bit for bit: 0.3, not 0.30000000000000004; -0.0 keeps its sign.
 std::string scriptNumber(double value);
 
 /// `script` as a script file that parseScript() reads back to the same script (source places

@@ -1,11 +1,13 @@
 // libFuzzer target: the playthrough script parser, against the first level (ramp). Any bytes must
-// give a script or one-line errors, never a crash; a script that loads must also play a few steps.
+// give a script or one-line errors, never a crash; a script that loads must write back to a script
+// that loads (and writes the same text again), and play a few steps.
 #include "level_run.hpp"
 #include "scene_file.hpp"
 #include "script_file.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace {
@@ -28,6 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (load.errors.empty()) __builtin_trap();
         return 0;
     }
+    // What the writer makes of a script that loaded must load too, and write again to the same text.
+    const std::string written = rube::game::writeScript(*load.script);
+    const rube::game::ScriptLoad again = rube::game::parseScript(written, "fuzz.written.toml", level());
+    if (!again.script || rube::game::writeScript(*again.script) != written) __builtin_trap();
     // A script that loaded has placements that passed every rule: playing them must not crash.
     if (rube::game::checkPlacements(level(), load.script->placements)) return 0;
     rube::game::LevelRun run(level(), load.script->placements);

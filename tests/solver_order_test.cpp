@@ -1,7 +1,7 @@
 // The order in which the solver sweeps its contacts (orderContacts): top layers first, contacts with
 // infinite mass last, each circle's first contact before any circle's second, and within those the
 // contacts that were pushing at the end of the last step before the others.
-#include "solver_contacts.hpp" // internal: tests may reach inside, users may not
+#include "solver_narrowphase.hpp" // internal: tests may reach inside, users may not
 
 #include <catch2/catch.hpp>
 

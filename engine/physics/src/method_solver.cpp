@@ -2,13 +2,13 @@
 // relax passes and restitution at the end (the "soft step" of Box2D v3), speculative contacts found
 // once per step through a uniform grid, and a continuous sweep for circles faster than their margin.
 #include "broadphase_grid.hpp"
-#include "contact_solver.hpp"
 #include "rigid_stage.hpp"
 #include "solver_bounce_flight.hpp"
-#include "solver_contacts.hpp"
 #include "solver_friction.hpp"
 #include "solver_impact_normal.hpp"
+#include "solver_narrowphase.hpp"
 #include "solver_sleep.hpp"
+#include "solver_soft_step.hpp"
 #include "solver_sweep.hpp"
 #include "solver_turning.hpp"
 #include "step_method.hpp"

@@ -4,7 +4,7 @@
 // SolverBody (the same velocities the circle contacts read and write, so balls and planks push
 // each other), with the circle's omega when the step models rotation. Not part of the public API.
 
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 
 #include <cmath>
 #include <span>

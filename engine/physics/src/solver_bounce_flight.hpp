@@ -1,7 +1,7 @@
 #pragma once
 // Internal: a lone bounce resolved at its time of impact under gravity. Not part of the public API.
 //
-// Restitution runs once at the end of the step (contact_solver.hpp): from the time of impact t0 to
+// Restitution runs once at the end of the step (solver_soft_step.hpp): from the time of impact t0 to
 // the end of the step the contact holds the circle, so gravity's share of the normal velocity after
 // the touch, g.n (dt - t0), is lost and the circle ends the step on the surface rather than on its
 // way up. At 60 Hz that put a 1 m/s bounce on a 17-degree line 5 degrees and 16 % off. A circle whose
@@ -9,7 +9,7 @@
 // t0 and flown along its parabola for the rest of the step instead. A circle with other contacts
 // keeps the end-of-step restitution: carrying it on would drive it into its neighbours.
 
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 
 #include <cstdint>
 #include <span>

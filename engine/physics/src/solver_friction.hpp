@@ -10,7 +10,7 @@
 // and an impulse lambda t on a (and -lambda t on b) changes it by lambda / tangentMass, turning each
 // circle by -r lambda / I (r_A x t = -rA for a; r_B x (-t) = -rB for b).
 
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 
 #include <algorithm>
 #include <span>

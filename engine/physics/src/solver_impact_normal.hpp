@@ -1,7 +1,7 @@
 #pragma once
 // Internal: speculative contacts aimed at their time of impact. Not part of the public API.
 //
-// A contact's normal is fixed for the step (contact_solver.hpp), taken where the pair starts. For a
+// A contact's normal is fixed for the step (solver_soft_step.hpp), taken where the pair starts. For a
 // pair that is still apart and closing fast, that is not where it will touch: a ball striking a line
 // cap or another ball at a glance meets it up to |v| dt further on, where the normal has turned (25
 // degrees for a 20 m/s glance at a cap at 60 Hz). Such a contact takes the normal at its time of
@@ -9,7 +9,7 @@
 // touches and restitution reflects the velocity about the true normal: v' = v - (1 + C)(v.n)n at the
 // point of impact (lecture 3); between two balls, along the line of centres at that moment.
 
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 
 #include <span>
 

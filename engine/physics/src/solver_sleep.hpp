@@ -16,7 +16,7 @@
 // that nothing pushes (under 1 cm/s, on a level floor or in free flight) is stopped with them.
 
 #include "broadphase_grid.hpp"
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 
 #include <cstdint>
 #include <span>

@@ -8,7 +8,7 @@
 // time of impact clamps it there, as Box2D's continuous pass does.
 
 #include "broadphase_grid.hpp"
-#include "solver_contacts.hpp"
+#include "solver_narrowphase.hpp"
 #include "step_method.hpp"
 
 #include <cstdint>

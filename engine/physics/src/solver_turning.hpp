@@ -9,8 +9,8 @@
 // is then that point's straight-line motion: the contact's gap s = s0 + n . (dpA - dpB) closes as the
 // paddle sweeps towards the ball, to first order in dt. Scenes without turning segments never enter this.
 
-#include "contact_solver.hpp"
 #include "solver_friction.hpp"
+#include "solver_soft_step.hpp"
 
 #include <cstddef>
 #include <span>

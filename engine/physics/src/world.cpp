@@ -1,7 +1,7 @@
 // World: owns the bodies, moves kinematic bodies along their paths, delegates the step to its method.
 #include "rube/physics/world.hpp"
 
-#include "field_forces.hpp"
+#include "field_pass.hpp"
 #include "kinematic_pose.hpp"
 #include "rope_constraint.hpp"
 #include "solver_sleep.hpp"

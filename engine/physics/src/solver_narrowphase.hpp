@@ -1,10 +1,10 @@
 #pragma once
-// Internal: the solver's contacts between steps: remembering how each pair ended the last step,
-// building this step's contacts from candidate pairs (narrowphase), ordering them for the
-// Gauss-Seidel sweeps, and reporting impacts.
+// Internal: the circle solver's narrowphase and its contacts between steps: remembering how each
+// pair ended the last step, building this step's contacts from candidate pairs (narrowphase),
+// ordering them for the Gauss-Seidel sweeps (solver_soft_step.hpp), and reporting impacts.
 
 #include "broadphase_grid.hpp"
-#include "contact_solver.hpp"
+#include "solver_soft_step.hpp"
 #include "step_method.hpp"
 
 #include <span>

@@ -1,5 +1,6 @@
-// Fields: air drag, wind, magnets and thrusters as velocity changes before the method's step.
-#include "field_forces.hpp"
+// The fields' pass (field_pass.hpp): air drag, wind, magnets and thrusters as velocity changes around the
+// method's step; also the public helpers of rube/physics/fields.hpp it uses (submergedArea, magnetForce).
+#include "field_pass.hpp"
 
 #include <algorithm>
 #include <cmath>

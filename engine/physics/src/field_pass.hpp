@@ -1,5 +1,6 @@
 #pragma once
-// Internal: the pass that turns a world's fields into velocity changes at the start of a step.
+// Internal: the pass that turns a world's fields (declared in rube/physics/fields.hpp) into velocity
+// changes at the start of a step. Not part of the public API.
 
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
@@ -9,7 +10,7 @@
 namespace rube {
 
 /// Changes the velocity of every dynamic circle by what the fields do to it over [time, time + dt].
-/// `gravity` is needed because linear drag is integrated together with it (see fields.cpp).
+/// `gravity` is needed because linear drag is integrated together with it (see field_pass.cpp).
 void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag& airDrag, Vec2 gravity, double time,
                  double dt);
 

@@ -1,5 +1,5 @@
-// The soft-step contact solver's stages: warm start, soft solve, relax, restitution.
-#include "contact_solver.hpp"
+// The circle solver's soft-step stages: warm start, soft solve, relax, restitution.
+#include "solver_soft_step.hpp"
 
 #include "solver_friction.hpp"
 

@@ -1,5 +1,5 @@
-// The solver's contacts: warm-start cache, narrowphase, Gauss-Seidel order, impact records.
-#include "solver_contacts.hpp"
+// The circle solver's narrowphase: warm-start cache, contacts from candidate pairs, Gauss-Seidel order, impact records.
+#include "solver_narrowphase.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
 #pragma once
-// Internal: the soft-step contact solver's data and its per-substep stages. Not part of the public API.
+// Internal: the circle solver's soft step: its contacts' data and per-substep stages (the rigid contacts
+// share its SolverBody and Softness). Not part of the public API.
 //
 // One step (Catto, "Solver2D" / Box2D v3's soft step): contacts are found once; then every substep
 // integrates velocities, warm starts, solves with soft position feedback, integrates positions and

@@ -1,0 +1,170 @@
+// Warm starting of rigid contacts (rigid_warm_start.hpp): a point found again next step, by its body
+// pair and its features, starts with the impulses it ended the last step with and counts as carried;
+// a point of another pair, of another feature, or one whose contact went away in between starts from
+// zero. Last, through the narrowphase: a box sliding on the ground keeps each corner's impulses.
+#include "rigid_manifold.hpp"   // internal: tests may reach inside, users may not
+#include "rigid_warm_start.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+using namespace rube;
+
+namespace {
+
+/// A contact between sides a and b with points of the given features and normal impulses (tangent: half).
+RigidContact contact(BodySide a, BodySide b, std::vector<std::uint32_t> features, std::vector<double> impulses) {
+    RigidContact c;
+    c.a = a;
+    c.b = b;
+    c.normal = {0.0, 1.0};
+    c.count = static_cast<int>(features.size());
+    for (int k = 0; k < c.count; ++k) {
+        c.points[k].feature = features[static_cast<std::size_t>(k)];
+        c.points[k].normalImpulse = impulses[static_cast<std::size_t>(k)];
+        c.points[k].tangentImpulse = 0.5 * impulses[static_cast<std::size_t>(k)] - 0.25;
+    }
+    return c;
+}
+
+/// A box of half extents `half`.
+RigidBody box(Vec2 half) {
+    RigidBody b;
+    b.shape = BodyShape::box;
+    b.halfExtents = half;
+    return b;
+}
+
+/// The same contact as found at the start of the next step: impulses zero, not carried.
+RigidContact fresh(RigidContact c) {
+    for (RigidContactPoint& p : c.points) {
+        p.normalImpulse = p.tangentImpulse = 0.0;
+        p.carried = false;
+    }
+    return c;
+}
+
+} // namespace
+
+TEST_CASE("a rigid contact point found again next step gets its impulses back", "[rigid][warmstart]") {
+    // Random pairs and features, looked up again in a shuffled order: each gets exactly its own impulses.
+    std::mt19937_64 rng(5);
+    std::uniform_int_distribution<int> index(0, 40);
+    std::uniform_real_distribution<double> impulse(0.01, 3.0);
+    for (int round = 0; round < 20; ++round) {
+        std::vector<RigidContact> last;
+        for (int k = 0; k < 60; ++k) {
+            const BodySide a{index(rng), true}, b{index(rng), index(rng) % 2 == 0};
+            last.push_back(contact(a, b, {static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(0x100 + k)},
+                                   {impulse(rng), impulse(rng)}));
+        }
+        RigidContactCache cache;
+        cache.store(last);
+        std::vector<RigidContact> next;
+        for (const RigidContact& c : last) next.push_back(fresh(c));
+        std::shuffle(next.begin(), next.end(), rng);
+        cache.apply(next);
+        for (const RigidContact& c : next)
+            for (int k = 0; k < c.count; ++k) {
+                // The contact it came from (pairs repeat, each with features of its own: match all three).
+                double expectedNormal = -1.0, expectedTangent = 0.0;
+                for (const RigidContact& old : last)
+                    for (int j = 0; j < old.count; ++j)
+                        if (old.a.index == c.a.index && old.b.index == c.b.index && old.b.rigid == c.b.rigid &&
+                            old.points[j].feature == c.points[k].feature) {
+                            expectedNormal = old.points[j].normalImpulse;
+                            expectedTangent = old.points[j].tangentImpulse;
+                        }
+                REQUIRE(expectedNormal > 0.0);
+                CHECK(c.points[k].normalImpulse == expectedNormal);
+                CHECK(c.points[k].tangentImpulse == expectedTangent);
+                CHECK(c.points[k].carried);
+            }
+    }
+}
+
+TEST_CASE("a rigid contact point of another pair or feature, or one that did not push, starts from zero", "[rigid][warmstart]") {
+    RigidContactCache cache;
+    const std::vector<RigidContact> last{contact({3, true}, {7, true}, {0x0201, 0x0210}, {2.0, 1.5}),
+                                         contact({3, true}, {7, false}, {0x0201}, {0.0})};
+    cache.store(last);
+    // Same features on other pairs: body 7 as a circle instead of a rigid body (and back: the second
+    // contact pushed nothing, so it is not remembered), another A, another B.
+    std::vector<RigidContact> next{fresh(contact({3, true}, {7, false}, {0x0210}, {0.0})),
+                                   fresh(contact({3, true}, {7, false}, {0x0201}, {0.0})),
+                                   fresh(contact({4, true}, {7, true}, {0x0201}, {0.0})),
+                                   fresh(contact({3, true}, {8, true}, {0x0201}, {0.0})),
+                                   // The right pair with features it did not have (between and after its own).
+                                   fresh(contact({3, true}, {7, true}, {0x0205}, {0.0})),
+                                   fresh(contact({3, true}, {7, true}, {0x0211}, {0.0}))};
+    cache.apply(next);
+    for (const RigidContact& c : next) {
+        CHECK(c.points[0].normalImpulse == 0.0);
+        CHECK(c.points[0].tangentImpulse == 0.0);
+        CHECK_FALSE(c.points[0].carried);
+    }
+    // The right pair and feature does find its impulses: the misses above were misses of the key.
+    std::vector<RigidContact> same{fresh(contact({3, true}, {7, true}, {0x0210}, {0.0}))};
+    cache.apply(same);
+    CHECK(same[0].points[0].normalImpulse == 1.5);
+    CHECK(same[0].points[0].carried);
+}
+
+TEST_CASE("a rigid contact that disappears for a step is not warm started when it comes back", "[rigid][warmstart]") {
+    RigidContactCache cache;
+    const RigidContact touching = contact({0, true}, {1, true}, {0x0200, 0x0201}, {1.0, 2.0});
+    const RigidContact other = contact({2, true}, {5, false}, {0x0300}, {0.7});
+    cache.store(std::vector<RigidContact>{touching, other});
+    // A step in which the pair came apart: only the other contact is stored.
+    cache.store(std::vector<RigidContact>{other});
+    std::vector<RigidContact> back{fresh(touching), fresh(other)};
+    cache.apply(back);
+    CHECK(back[0].points[0].normalImpulse == 0.0);
+    CHECK(back[0].points[1].normalImpulse == 0.0);
+    CHECK_FALSE(back[0].points[0].carried);
+    CHECK(back[1].points[0].normalImpulse == 0.7);
+    // A step with no contacts at all forgets everything.
+    cache.store(std::vector<RigidContact>{});
+    std::vector<RigidContact> later{fresh(other)};
+    cache.apply(later);
+    CHECK(later[0].points[0].normalImpulse == 0.0);
+}
+
+TEST_CASE("a box sliding on the ground keeps each corner's impulses from step to step", "[rigid][warmstart]") {
+    // The manifold's ids carry the features: the left corner's point is found again as the left
+    // corner's, however far the box slid, so its impulse follows it and not the right corner's.
+    const RoundedPolygon ground = makeRoundedPolygon(box({5.0, 0.5}), {0.0, 0.0}, 0.0);
+    const RigidBody crate = box({0.4, 0.3});
+    const auto step = [&](double x, double tilt) {
+        const Manifold m = collideRoundedPolygons(ground, makeRoundedPolygon(crate, {x, 0.799}, tilt), 0.02);
+        RigidContact c;
+        c.a = {0, true};
+        c.b = {1, true};
+        c.normal = m.normal;
+        c.count = m.count;
+        for (int k = 0; k < m.count; ++k) c.points[k].feature = m.points[k].id;
+        return std::make_pair(c, m);
+    };
+    RigidContactCache cache;
+    auto [first, firstManifold] = step(-2.0, 0.0);
+    REQUIRE(first.count == 2);
+    for (int k = 0; k < 2; ++k) first.points[k].normalImpulse = firstManifold.points[k].point.x < -2.0 ? 3.0 : 1.0; // left, right
+    cache.store(std::vector<RigidContact>{first});
+    for (int n = 1; n <= 30; ++n) {
+        auto [now, manifold] = step(-2.0 + 0.1 * n, 0.002 * (n % 3));
+        REQUIRE(now.count == 2);
+        std::vector<RigidContact> list{now};
+        cache.apply(list);
+        for (int k = 0; k < 2; ++k) {
+            const bool left = manifold.points[k].point.x < -2.0 + 0.1 * n;
+            CHECK(list[0].points[k].normalImpulse == (left ? 3.0 : 1.0));
+            CHECK(list[0].points[k].carried);
+        }
+        cache.store(list);
+    }
+}

@@ -188,6 +188,8 @@ ItemKind findPartKind(std::string_view name);
 ItemKind partKind(std::string_view name);
 /// The kinds that play `role`, in referenceOrder().
 std::vector<ItemKind> partKindsPlaying(PartRole role);
+/// The docs' table of every kind and its keys (game/scene-format.md holds it; a test checks they agree).
+std::string partKindsMarkdown();
 
 } // namespace rube::game
 

@@ -61,7 +61,7 @@ struct BallParams {
 };
 
 /// The keys of a ball.
-inline constexpr PartKey kBallKeys[] = {kKindKey, kNameKey, kPositionKey, {"radius", "kind's", "m"}, {"velocity", "[0, 0]", "initial velocity, m/s"}};
+inline constexpr PartKey kBallKeys[] = {kKindKey, kNameKey, kPositionKey, {"radius", "as above", "m"}, {"velocity", "[0, 0]", "initial velocity, m/s"}};
 
 /// A dynamic ball: the kinds differ in radius, mass, bounciness and look only.
 class BallKind : public PartKind {
@@ -133,7 +133,7 @@ struct BoardParams {
 };
 
 /// The keys of a board.
-inline constexpr PartKey kBoardKeys[] = {kKindKey, kNameKey, kPositionKey, {"angle", "0", "tilt, degrees"}, {"length", "kind's", "m"}};
+inline constexpr PartKey kBoardKeys[] = {kKindKey, kNameKey, kPositionKey, {"angle", "0", "tilt, degrees"}, {"length", "as above", "m"}};
 
 /// A fixed straight board, centred on its position and tilted by its angle: planks and ramps.
 class BoardKind : public PartKind {

@@ -1,5 +1,5 @@
 // The docs of the part kinds, written from their descriptors: game/scene-format.md holds this text
-// between its "parts" markers, and tests/part_kinds_test.cpp fails when the two differ, so the
+// between its "parts" markers, and tests/parts/part_kinds_test.cpp fails when the two differ, so the
 // docs cannot drift from the code.
 #include "part_kind.hpp"
 

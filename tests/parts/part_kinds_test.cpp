@@ -16,7 +16,7 @@ using namespace rube::game;
 namespace {
 
 const std::string kDocs = RUBE_GAME_LEVELS_DIR "/../game/scene-format.md";
-const std::string kBegin = "<!-- parts: generated from the kinds' descriptors (partKindsMarkdown); tests/part_kinds_test.cpp checks it -->\n";
+const std::string kBegin = "<!-- parts: generated from the kinds' descriptors (partKindsMarkdown); tests/parts/part_kinds_test.cpp checks it -->\n";
 const std::string kEnd = "<!-- parts: end -->";
 
 std::string readAll(const std::string& path) {

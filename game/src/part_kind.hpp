@@ -41,12 +41,13 @@ public:
     /// Holds `params`.
     template <class P>
     explicit PartParams(P params) : value_(std::move(params)) {}
-    /// The parameters as the kind's struct `P`; the kind's own file is the only caller.
+    /// The parameters as the kind's struct `P`; the kind's own file is the only caller. Asking for
+    /// another kind's struct throws std::bad_any_cast: a bug, never a silent misreading.
     template <class P>
-    P& as() { return *std::any_cast<P>(&value_); }
+    P& as() { return std::any_cast<P&>(value_); }
     /// As above, read-only.
     template <class P>
-    const P& as() const { return *std::any_cast<P>(&value_); }
+    const P& as() const { return std::any_cast<const P&>(value_); }
 
 private:
     std::any value_;

@@ -29,8 +29,8 @@ std::string partKindsMarkdown() {
         for (const PartKey& key : kind->keys()) {
             if (key.key == kKindKey.key) continue; // every item has it: it names the row above
             const bool required = key.value == "required" || (key.key == kNameKey.key && kind->needsName());
-            out += "| | `" + std::string(key.key) + "` | " + (required ? std::string("required") : cell(key.value)) + " | " + cell(key.doc) +
-                   " |\n";
+            out += "| | `" + std::string(key.key) + "` | " + (required ? std::string("required") : cell(key.value)) +
+                   " | " + cell(key.doc) + " |\n";
         }
     }
     return out;

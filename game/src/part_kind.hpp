@@ -44,10 +44,14 @@ public:
     /// The parameters as the kind's struct `P`; the kind's own file is the only caller. Asking for
     /// another kind's struct throws std::bad_any_cast: a bug, never a silent misreading.
     template <class P>
-    P& as() { return std::any_cast<P&>(value_); }
+    P& as() {
+        return std::any_cast<P&>(value_);
+    }
     /// As above, read-only.
     template <class P>
-    const P& as() const { return std::any_cast<const P&>(value_); }
+    const P& as() const {
+        return std::any_cast<const P&>(value_);
+    }
 
 private:
     std::any value_;
@@ -56,12 +60,12 @@ private:
 /// One item: a fixed part of the level, or one the player placed. Angles are radians here (files
 /// write degrees); everything the kind alone uses is in `params`.
 struct ItemDesc {
-    std::string name;          ///< unique among the level's names; may be empty for balls and planks
-    ItemKind kind = nullptr;   ///< its descriptor
-    Vec2 position;             ///< centre; a bucket's is the middle of its floor
-    double angle = 0.0;        ///< planks and ramps: tilt; cannons: aim; fans and rockets: the way they push (radians)
-    SourcePlace place;         ///< where the file wrote it, for messages about it
-    PartParams params;         ///< the kind's own parameter struct, at its defaults unless the file set them
+    std::string name;        ///< unique among the level's names; may be empty for balls and planks
+    ItemKind kind = nullptr; ///< its descriptor
+    Vec2 position;           ///< centre; a bucket's is the middle of its floor
+    double angle = 0.0;      ///< planks and ramps: tilt; cannons: aim; fans and rockets: the way they push (radians)
+    SourcePlace place;       ///< where the file wrote it, for messages about it
+    PartParams params;       ///< the kind's own parameter struct, at its defaults unless the file set them
 };
 
 /// The physics bodies one item adds (circles and segments, in order) and the field it brings.
@@ -102,9 +106,9 @@ enum class PartRole : std::uint8_t {
 
 /// What a kind draws with, handed to PartKind::draw.
 struct PartDrawing {
-    const LevelRun& run;     ///< the level being played (its world, items and states)
-    int item;                ///< the item's index in run.items()
-    render::DrawList& list;  ///< where to draw
+    const LevelRun& run;    ///< the level being played (its world, items and states)
+    int item;               ///< the item's index in run.items()
+    render::DrawList& list; ///< where to draw
 };
 
 /// The descriptor of a kind of part. Override what the kind does; the defaults are "nothing".
@@ -173,7 +177,9 @@ public:
     /// The action a click on it takes while running, if any (fire, detonate, toggle).
     virtual std::optional<ActionKind> clickAction() const { return std::nullopt; }
     /// Why a click can no longer use it ("gun has fired already"), or "".
-    virtual std::string spent(const ItemDesc& item, const ItemState& state) const { return (void)item, (void)state, ""; }
+    virtual std::string spent(const ItemDesc& item, const ItemState& state) const {
+        return (void)item, (void)state, "";
+    }
 
     /// Draws the item as it is in the run.
     virtual void draw(const PartDrawing& drawing) const = 0;

@@ -22,8 +22,8 @@ std::vector<ItemKind> sortedKinds() {
     std::sort(kinds.begin(), kinds.end(), [](ItemKind a, ItemKind b) { return a->order() < b->order(); });
     for (std::size_t i = 1; i < kinds.size(); ++i)
         if (kinds[i]->order() == kinds[i - 1]->order() || findPartKind(kinds[i]->name()) != kinds[i]) {
-            std::fprintf(stderr, "part kinds '%s' and '%s' share an order or a name\n", std::string(kinds[i - 1]->name()).c_str(),
-                         std::string(kinds[i]->name()).c_str());
+            std::fprintf(stderr, "part kinds '%s' and '%s' share an order or a name\n",
+                         std::string(kinds[i - 1]->name()).c_str(), std::string(kinds[i]->name()).c_str());
             std::abort();
         }
     return kinds;
@@ -55,26 +55,30 @@ std::vector<ItemKind> partKindsPlaying(PartRole role) {
     std::vector<ItemKind> kinds;
     for (ItemKind kind : allPartKinds())
         if (kind->plays(role)) kinds.push_back(kind);
-    std::sort(kinds.begin(), kinds.end(), [](ItemKind a, ItemKind b) { return a->referenceOrder() < b->referenceOrder(); });
+    std::sort(kinds.begin(), kinds.end(),
+              [](ItemKind a, ItemKind b) { return a->referenceOrder() < b->referenceOrder(); });
     return kinds;
 }
 
-void PartKind::checkReferences(const ItemDesc& item, SceneReading& reading) const {
-    (void)item, (void)reading;
-}
+void PartKind::checkReferences(const ItemDesc& item, SceneReading& reading) const { (void)item, (void)reading; }
 
 // The box around the item's room: each circle's square, each segment's ends padded by its radius.
 Aabb PartKind::extent(const ItemDesc& item) const {
     const ItemBodies shapes = room(item);
     std::optional<Aabb> box;
     const auto grow = [&](Vec2 lo, Vec2 hi) {
-        if (!box) box = Aabb{lo, hi};
-        else box = Aabb{Vec2{std::min(box->min.x, lo.x), std::min(box->min.y, lo.y)}, Vec2{std::max(box->max.x, hi.x), std::max(box->max.y, hi.y)}};
+        if (!box)
+            box = Aabb{lo, hi};
+        else
+            box = Aabb{Vec2{std::min(box->min.x, lo.x), std::min(box->min.y, lo.y)},
+                       Vec2{std::max(box->max.x, hi.x), std::max(box->max.y, hi.y)}};
     };
-    for (const CircleDef& c : shapes.circles) grow(c.position - Vec2{c.radius, c.radius}, c.position + Vec2{c.radius, c.radius});
+    for (const CircleDef& c : shapes.circles)
+        grow(c.position - Vec2{c.radius, c.radius}, c.position + Vec2{c.radius, c.radius});
     for (const SegmentDef& s : shapes.segments) {
         const Vec2 pad{s.radius, s.radius};
-        grow(Vec2{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)} - pad, Vec2{std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)} + pad);
+        grow(Vec2{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)} - pad,
+             Vec2{std::max(s.a.x, s.b.x), std::max(s.a.y, s.b.y)} + pad);
     }
     return box.value_or(Aabb{item.position, item.position});
 }

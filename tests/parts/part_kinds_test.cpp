@@ -16,7 +16,8 @@ using namespace rube::game;
 namespace {
 
 const std::string kDocs = RUBE_GAME_LEVELS_DIR "/../game/scene-format.md";
-const std::string kBegin = "<!-- parts: generated from the kinds' descriptors (partKindsMarkdown); tests/parts/part_kinds_test.cpp checks it -->\n";
+const std::string kBegin = "<!-- parts: generated from the kinds' descriptors (partKindsMarkdown); "
+                           "tests/parts/part_kinds_test.cpp checks it -->\n";
 const std::string kEnd = "<!-- parts: end -->";
 
 std::string readAll(const std::string& path) {
@@ -62,7 +63,8 @@ TEST_CASE("each kind's default item is of that kind, and its bodies and room lie
                 for (const SegmentDef& s : shapes.segments) CHECK((inside(s.a, s.radius) && inside(s.b, s.radius)));
             }
             // A kind picked by a click is picked at its own position.
-            CHECK(kind->picked(item, item.position, item.position, 0.0) == (kind->room(item).circles.size() + kind->room(item).segments.size() > 0));
+            CHECK(kind->picked(item, item.position, item.position, 0.0) ==
+                  (kind->room(item).circles.size() + kind->room(item).segments.size() > 0));
         }
     }
 }
@@ -76,11 +78,13 @@ TEST_CASE("the docs list every kind's keys as its descriptor does", "[parts]") {
     const std::string generated = partKindsMarkdown();
     // RUBE_WRITE_PART_DOCS=1 rewrites the section from the descriptors (after a kind changes).
     if (const char* write = std::getenv("RUBE_WRITE_PART_DOCS"); write && std::string(write) == "1") {
-        std::ofstream(kDocs, std::ios::binary) << docs.substr(0, begin + kBegin.size()) << generated << docs.substr(end);
+        std::ofstream(kDocs, std::ios::binary)
+            << docs.substr(0, begin + kBegin.size()) << generated << docs.substr(end);
         return;
     }
     const std::string written = docs.substr(begin + kBegin.size(), end - begin - kBegin.size());
     INFO("game/scene-format.md differs from the descriptors: run level_tests \"[parts]\" with RUBE_WRITE_PART_DOCS=1");
     CHECK(written == generated);
-    for (ItemKind kind : allPartKinds()) CHECK(written.find("| **" + std::string(kind->name()) + "** |") != std::string::npos);
+    for (ItemKind kind : allPartKinds())
+        CHECK(written.find("| **" + std::string(kind->name()) + "** |") != std::string::npos);
 }

@@ -13,13 +13,14 @@ using namespace rube::game;
 
 namespace {
 
-constexpr double kPegRadius = 0.12;     // the peg's default radius, m
-constexpr double kPegBounciness = 0.8;  // its bounciness
+constexpr double kPegRadius = 0.12;    // the peg's default radius, m
+constexpr double kPegBounciness = 0.8; // its bounciness
 
 // A ball of `kind` (radius r, bounciness c) resting `gap` m above the top of a peg at the origin.
 std::string dropOnPeg(const std::string& kind, double gap, double r) {
-    return "name = \"peg\"\n[world]\ntime_step = 0.01\n[[item]]\nkind = \"peg\"\nposition = [0, 0]\n[[item]]\nkind = \"" + kind +
-           "\"\nposition = [0, " + std::to_string(kPegRadius + r + gap) + "]\n";
+    return "name = \"peg\"\n[world]\ntime_step = 0.01\n[[item]]\nkind = \"peg\"\nposition = [0, 0]\n[[item]]\nkind = "
+           "\"" +
+           kind + "\"\nposition = [0, " + std::to_string(kPegRadius + r + gap) + "]\n";
 }
 
 std::string firstError(const std::string& text) {
@@ -29,7 +30,8 @@ std::string firstError(const std::string& text) {
 
 } // namespace
 
-TEST_CASE("peg: a ball dropped on its top leaves with (C_ball x C_peg) of its speed, and the peg stays put", "[parts][peg]") {
+TEST_CASE("peg: a ball dropped on its top leaves with (C_ball x C_peg) of its speed, and the peg stays put",
+          "[parts][peg]") {
     struct Ball {
         const char* kind;
         double radius, bounciness;
@@ -70,7 +72,9 @@ TEST_CASE("peg: read like every [[item]], with its own keys only", "[parts][peg]
     const std::string floor = "name = \"t\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n";
     CHECK(firstError(floor + "[[item]]\nkind = \"peg\"\nposition = [0, 1]\nraduis = 0.2\n") ==
           "t.toml:8:1: unknown key 'raduis' in [[item]] of kind 'peg' (did you mean 'radius'?)");
-    CHECK(firstError(floor + "[[item]]\nkind = \"pge\"\nposition = [0, 1]\n").ends_with("got 'pge' (did you mean 'peg'?)"));
+    CHECK(firstError(floor + "[[item]]\nkind = \"pge\"\nposition = [0, 1]\n")
+              .ends_with("got 'pge' (did you mean 'peg'?)"));
     CHECK(firstError(floor + "[[item]]\nkind = \"peg\"\nposition = [0, 1]\nradius = 0.3\n") == "no error");
-    CHECK(firstError(floor + "[[item]]\nkind = \"peg\"\nposition = [0, 1]\nradius = 0\n").starts_with("t.toml:8:10: radius must be"));
+    CHECK(firstError(floor + "[[item]]\nkind = \"peg\"\nposition = [0, 1]\nradius = 0\n")
+              .starts_with("t.toml:8:10: radius must be"));
 }

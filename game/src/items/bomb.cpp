@@ -18,11 +18,11 @@ enum class Trigger : std::uint8_t { timer, impact, switchHit };
 constexpr std::string_view kTriggerNames[] = {"timer", "impact", "switch"};
 
 struct BombParams {
-    double radius = 0.25;            // m
-    double blastRadius = 2.0;        // bodies whose centre is closer are pushed, m
-    double strength = 6.0;           // impulse at the centre, N s
+    double radius = 0.25;              // m
+    double blastRadius = 2.0;          // bodies whose centre is closer are pushed, m
+    double strength = 6.0;             // impulse at the centre, N s
     Trigger trigger = Trigger::impact; // a placed bomb has no fuse or switch to wait for: it goes off when hit
-    double fuse = 0.0;               // with a timer: seconds from the start
+    double fuse = 0.0;                 // with a timer: seconds from the start
 };
 
 constexpr PartKey kKeys[] = {kKindKey,
@@ -83,7 +83,8 @@ public:
     }
     void hit(LevelRun& run, int item, Vec2 point) const override {
         (void)point;
-        if (run.items()[static_cast<std::size_t>(item)].params.as<BombParams>().trigger == Trigger::impact) trigger(run, item);
+        if (run.items()[static_cast<std::size_t>(item)].params.as<BombParams>().trigger == Trigger::impact)
+            trigger(run, item);
     }
     // Goes off: once, now.
     void trigger(LevelRun& run, int item) const override {
@@ -100,7 +101,8 @@ public:
         const std::vector<int> pushed = applyExplosion(world, explosion);
         // The casing is gone: shrunk to a speck, since a World cannot remove a body.
         if (state.firstCircle >= 0) world.circles()[static_cast<std::size_t>(state.firstCircle)].radius = 1e-4;
-        run.report({EventKind::explosion, run.frame(), world.time(), desc.name, desc.position, static_cast<int>(pushed.size())});
+        run.report({EventKind::explosion, run.frame(), world.time(), desc.name, desc.position,
+                    static_cast<int>(pushed.size())});
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::detonate; }
     std::string spent(const ItemDesc& item, const ItemState& state) const override {
@@ -115,11 +117,12 @@ public:
         if (state.detonatedAt) {
             const double age = d.run.world().time() - *state.detonatedAt;
             if (age < kRingSeconds)
-                d.list.ring(pt(item.position), static_cast<float>(p.blastRadius * std::max(0.05, age / kRingSeconds)), 4.0f,
-                            palette["explosion"]);
+                d.list.ring(pt(item.position), static_cast<float>(p.blastRadius * std::max(0.05, age / kRingSeconds)),
+                            4.0f, palette["explosion"]);
         } else {
             d.list.circle(pt(at), static_cast<float>(p.radius), style("ground_outline", "ball_outline"));
-            d.list.line(pt(at + Vec2{0.0, p.radius}), pt(at + Vec2{0.4 * p.radius, 1.5 * p.radius}), 3.0f, palette["explosion"]);
+            d.list.line(pt(at + Vec2{0.0, p.radius}), pt(at + Vec2{0.4 * p.radius, 1.5 * p.radius}), 3.0f,
+                        palette["explosion"]);
         }
     }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {

@@ -8,7 +8,9 @@ class BouncyKind final : public BallKind {
 public:
     std::string_view name() const override { return "bouncy"; }
     int order() const override { return 1; }
-    std::string_view summary() const override { return "a white 0.5 kg ball with a ring, radius 0.25 m, bounciness 0.95: lively on a lively surface"; }
+    std::string_view summary() const override {
+        return "a white 0.5 kg ball with a ring, radius 0.25 m, bounciness 0.95: lively on a lively surface";
+    }
 
 protected:
     double radius() const override { return 0.25; }

@@ -68,8 +68,9 @@ public:
         const BucketParams& p = item.params.as<BucketParams>();
         const auto& goal = d.run.goal();
         if (!(goal && goal->kind == GoalKind::ballInBucket && goal->item == item.name)) return;
-        d.list.box(pt(item.position + Vec2{0.0, 0.5 * p.height}), {static_cast<float>(0.5 * p.width), static_cast<float>(0.5 * p.height)},
-                   0.0f, {render::Palette::greybox()["goal"].withAlpha(0x60), render::Color::transparent(), 0.0f});
+        d.list.box(pt(item.position + Vec2{0.0, 0.5 * p.height}),
+                   {static_cast<float>(0.5 * p.width), static_cast<float>(0.5 * p.height)}, 0.0f,
+                   {render::Palette::greybox()["goal"].withAlpha(0x60), render::Color::transparent(), 0.0f});
     }
 };
 

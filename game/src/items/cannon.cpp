@@ -17,9 +17,9 @@ constexpr double kArcSeconds = 3.0;      // how far ahead the predicted arc look
 constexpr int kArcPoints = 60;
 
 struct CannonParams {
-    double speed = 8.0;            // muzzle speed, m/s
-    ItemKind ammo = nullptr;       // the ball kind it shoots
-    std::optional<double> fireAt;  // fires by itself at this time, s
+    double speed = 8.0;           // muzzle speed, m/s
+    ItemKind ammo = nullptr;      // the ball kind it shoots
+    std::optional<double> fireAt; // fires by itself at this time, s
 };
 
 constexpr PartKey kKeys[] = {kKindKey,
@@ -42,7 +42,9 @@ public:
     std::string_view name() const override { return "cannon"; }
     int order() const override { return 7; }
     int referenceOrder() const override { return 0; }
-    std::string_view summary() const override { return "a fixed cannon (no body: its shots must not hit its own barrel); needs a name"; }
+    std::string_view summary() const override {
+        return "a fixed cannon (no body: its shots must not hit its own barrel); needs a name";
+    }
     std::span<const PartKey> keys() const override { return kKeys; }
     bool needsName() const override { return true; }
     bool plays(PartRole role) const override { return role == PartRole::fire || role == PartRole::triggered; }
@@ -82,7 +84,8 @@ public:
     }
     void afterStep(LevelRun& run, int item) const override {
         const auto& fireAt = run.items()[static_cast<std::size_t>(item)].params.as<CannonParams>().fireAt;
-        if (fireAt && !run.states()[static_cast<std::size_t>(item)].fired && run.world().time() >= *fireAt - 1e-9) run.fire(item);
+        if (fireAt && !run.states()[static_cast<std::size_t>(item)].fired && run.world().time() >= *fireAt - 1e-9)
+            run.fire(item);
     }
     void trigger(LevelRun& run, int item) const override { run.fire(item); }
     std::optional<ActionKind> clickAction() const override { return ActionKind::fire; }
@@ -97,15 +100,15 @@ public:
         const render::Palette& palette = render::Palette::greybox();
         const Vec2 dir = Vec2::fromAngle(state.aim);
         if (!state.fired) {
-            const auto arc = predictedArc(item.position, d.run.launchVelocity(d.item), world.def().gravity, kArcSeconds, kArcPoints,
-                                          world.def().bounds);
+            const auto arc = predictedArc(item.position, d.run.launchVelocity(d.item), world.def().gravity, kArcSeconds,
+                                          kArcPoints, world.def().bounds);
             std::vector<render::Point> points;
             for (Vec2 p : arc) points.push_back(pt(p));
             if (points.size() >= 2) d.list.polyline(points, kArcWidth, palette["arrow"], palette["arrow"].withAlpha(0));
         }
         d.list.box(pt(item.position + dir * (0.5 * kBarrelLength)),
-                   {static_cast<float>(0.5 * kBarrelLength), static_cast<float>(kBarrelHalfWidth)}, static_cast<float>(state.aim),
-                   style("box", "box_outline"));
+                   {static_cast<float>(0.5 * kBarrelLength), static_cast<float>(kBarrelHalfWidth)},
+                   static_cast<float>(state.aim), style("box", "box_outline"));
         d.list.circle(pt(item.position), 0.25f, style("ground", "ground_outline"));
     }
 };

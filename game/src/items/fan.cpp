@@ -10,9 +10,9 @@
 namespace rube::game::parts {
 namespace {
 
-constexpr double kFanDrag = 3.0;      // drag per metre of a ball's width, N s/m^2
-constexpr double kWindSpacing = 0.8;  // m between the drawn arrows, along and across the column
-constexpr double kWindArrow = 0.35;   // m: each arrow's length
+constexpr double kFanDrag = 3.0;     // drag per metre of a ball's width, N s/m^2
+constexpr double kWindSpacing = 0.8; // m between the drawn arrows, along and across the column
+constexpr double kWindArrow = 0.35;  // m: each arrow's length
 
 struct FanParams {
     double width = 1.2;  // m
@@ -105,7 +105,10 @@ public:
         return item.params.as<FanParams>().speed;
     }
     void trigger(LevelRun& run, int item) const override {
-        run.partWorld().fields().winds[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)].on ^= true;
+        run.partWorld()
+            .fields()
+            .winds[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)]
+            .on ^= true;
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     void draw(const PartDrawing& d) const override {
@@ -114,8 +117,8 @@ public:
         const Wind& wind = world.fields().winds[static_cast<std::size_t>(stateOf(d).field)];
         // The motor sits behind the housing (drawn with the segments), on the side the air comes from.
         const Vec2 back = item.position - wind.direction * 0.2;
-        d.list.box(pt(back), {0.2f, static_cast<float>(0.25 * item.params.as<FanParams>().width)}, static_cast<float>(item.angle),
-                   style(wind.on ? "box" : "ground", "box_outline"));
+        d.list.box(pt(back), {0.2f, static_cast<float>(0.25 * item.params.as<FanParams>().width)},
+                   static_cast<float>(item.angle), style(wind.on ? "box" : "ground", "box_outline"));
         if (wind.on) drawWind(wind, world.time(), d.list);
     }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {

@@ -8,7 +8,9 @@ class HeavyKind final : public BallKind {
 public:
     std::string_view name() const override { return "heavy"; }
     int order() const override { return 0; }
-    std::string_view summary() const override { return "a dark 8 kg ball, radius 0.3 m, bounciness 0.2: dull on anything"; }
+    std::string_view summary() const override {
+        return "a dark 8 kg ball, radius 0.3 m, bounciness 0.2: dull on anything";
+    }
 
 protected:
     double radius() const override { return 0.3; }

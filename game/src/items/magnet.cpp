@@ -63,7 +63,10 @@ public:
         return std::sqrt(2.0 * p.strength / (lightest * p.radius));
     }
     void trigger(LevelRun& run, int item) const override {
-        run.partWorld().fields().magnets[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)].on ^= true;
+        run.partWorld()
+            .fields()
+            .magnets[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)]
+            .on ^= true;
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     void draw(const PartDrawing& d) const override {
@@ -73,7 +76,8 @@ public:
         const float r = static_cast<float>(p.radius);
         const bool on = d.run.world().fields().magnets[static_cast<std::size_t>(stateOf(d).field)].on;
         if (on && std::isfinite(p.reach))
-            d.list.ring(pt(at), static_cast<float>(p.reach), 1.5f, render::Palette::greybox()["magnet"].withAlpha(0x50));
+            d.list.ring(pt(at), static_cast<float>(p.reach), 1.5f,
+                        render::Palette::greybox()["magnet"].withAlpha(0x50));
         d.list.circle(pt(at), r, style(on ? "magnet" : "box", "ball_outline"));
         d.list.box(pt(at - Vec2{0.0, 0.5 * p.radius}), {0.6f * r, 0.2f * r}, 0.0f, style("ball", "ball_outline"));
     }

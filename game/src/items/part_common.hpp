@@ -61,7 +61,8 @@ struct BallParams {
 };
 
 /// The keys of a ball.
-inline constexpr PartKey kBallKeys[] = {kKindKey, kNameKey, kPositionKey, {"radius", "as above", "m"}, {"velocity", "[0, 0]", "initial velocity, m/s"}};
+inline constexpr PartKey kBallKeys[] = {
+    kKindKey, kNameKey, kPositionKey, {"radius", "as above", "m"}, {"velocity", "[0, 0]", "initial velocity, m/s"}};
 
 /// A dynamic ball: the kinds differ in radius, mass, bounciness and look only.
 class BallKind : public PartKind {
@@ -101,7 +102,8 @@ public:
         if (state.firstCircle < 0) return;
         const Circle& c = d.run.world().circles()[static_cast<std::size_t>(state.firstCircle)];
         decorateBehind(c, d.list);
-        d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()), look());
+        d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()),
+                               look());
         decorateFront(c, d.list);
     }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {
@@ -133,7 +135,8 @@ struct BoardParams {
 };
 
 /// The keys of a board.
-inline constexpr PartKey kBoardKeys[] = {kKindKey, kNameKey, kPositionKey, {"angle", "0", "tilt, degrees"}, {"length", "as above", "m"}};
+inline constexpr PartKey kBoardKeys[] = {
+    kKindKey, kNameKey, kPositionKey, {"angle", "0", "tilt, degrees"}, {"length", "as above", "m"}};
 
 /// A fixed straight board, centred on its position and tilted by its angle: planks and ramps.
 class BoardKind : public PartKind {

@@ -8,7 +8,9 @@ class PlankKind final : public BoardKind {
 public:
     std::string_view name() const override { return "plank"; }
     int order() const override { return 4; }
-    std::string_view summary() const override { return "a fixed board, 2 m long, bounciness 0.5, centred on its position"; }
+    std::string_view summary() const override {
+        return "a fixed board, 2 m long, bounciness 0.5, centred on its position";
+    }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {
         (void)available;
         const float r = static_cast<float>(0.5 * size);

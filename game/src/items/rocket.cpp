@@ -10,7 +10,7 @@
 namespace rube::game::parts {
 namespace {
 
-constexpr double kMass = 1.0;         // kg
+constexpr double kMass = 1.0; // kg
 constexpr double kBounciness = 0.3;
 constexpr double kFlameLength = 1.6;  // its flame, in its radii beyond the body ...
 constexpr double kFlameFlicker = 0.4; // ... give or take this much ...
@@ -40,7 +40,8 @@ constexpr PartKey kKeys[] = {kKindKey,
 void drawFlame(Vec2 centre, double radius, Vec2 direction, double time, render::DrawList& list) {
     const double length = radius * (kFlameLength + kFlameFlicker * std::sin(kFlameRate * time));
     const Vec2 back = centre - direction * (0.6 * radius), across = direction.perpendicular() * (0.55 * radius);
-    const render::Point flame[] = {pt(back + across), pt(back - direction * (0.4 * radius + length)), pt(back - across)};
+    const render::Point flame[] = {pt(back + across), pt(back - direction * (0.4 * radius + length)),
+                                   pt(back - across)};
     const render::Palette& p = render::Palette::greybox();
     list.polygon(flame, {p["flame"], p["explosion"], 1.0f});
 }
@@ -98,7 +99,8 @@ public:
     // A rocket lights once, now, and burns its full time; lit or burnt out, it cannot be lit again.
     void trigger(LevelRun& run, int item) const override {
         World& world = run.partWorld();
-        Thruster& thruster = world.fields().thrusters[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)];
+        Thruster& thruster =
+            world.fields().thrusters[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(item)].field)];
         if (std::isinf(thruster.start)) {
             thruster.start = world.time();
             thruster.end = world.time() + run.items()[static_cast<std::size_t>(item)].params.as<RocketParams>().burn;

@@ -8,7 +8,9 @@ class SteelKind final : public BallKind {
 public:
     std::string_view name() const override { return "steel"; }
     int order() const override { return 2; }
-    std::string_view summary() const override { return "a grey 4 kg ball, radius 0.2 m, bounciness 0.7: the one ball magnets pull"; }
+    std::string_view summary() const override {
+        return "a grey 4 kg ball, radius 0.2 m, bounciness 0.7: the one ball magnets pull";
+    }
 
 protected:
     double radius() const override { return 0.2; }

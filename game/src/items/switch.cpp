@@ -14,18 +14,21 @@ struct SwitchParams {
     SourcePlace at;       // where the file wrote `triggers`, for the message when it names nothing that fits
 };
 
-constexpr PartKey kKeys[] = {kKindKey,
-                             kNameKey,
-                             kPositionKey,
-                             {"radius", "0.2", "m"},
-                             {"triggers", "required", "the name of a cannon, bomb, fan, magnet or rocket, or of a [[rope]] (cut)"}};
+constexpr PartKey kKeys[] = {
+    kKindKey,
+    kNameKey,
+    kPositionKey,
+    {"radius", "0.2", "m"},
+    {"triggers", "required", "the name of a cannon, bomb, fan, magnet or rocket, or of a [[rope]] (cut)"}};
 
 class SwitchKind final : public PartKind {
 public:
     std::string_view name() const override { return "switch"; }
     int order() const override { return 11; }
     int referenceOrder() const override { return 3; }
-    std::string_view summary() const override { return "a fixed button, bounciness 0.5, that triggers what it names when first touched"; }
+    std::string_view summary() const override {
+        return "a fixed button, bounciness 0.5, that triggers what it names when first touched";
+    }
     std::span<const PartKey> keys() const override { return kKeys; }
     bool plays(PartRole role) const override {
         return role == PartRole::toggle || role == PartRole::aimTarget || role == PartRole::hitReport;
@@ -48,7 +51,8 @@ public:
     void checkReferences(const ItemDesc& item, SceneReading& reading) const override {
         const SwitchParams& p = item.params.as<SwitchParams>();
         if (p.triggers.empty() || reading.scene.findRope(p.triggers) >= 0) return; // a switch may cut a named [[rope]]
-        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered); !message.empty())
+        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered);
+            !message.empty())
             reading.diag.error(p.at, std::move(message));
     }
     ItemBodies bodies(const ItemDesc& item) const override {
@@ -61,18 +65,21 @@ public:
         ItemState& state = run.partState(item);
         if (state.hit) return;
         state.hit = true;
-        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name, point, 0});
+        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                    point, 0});
         trigger(run, item);
     }
     void trigger(LevelRun& run, int item) const override {
         const std::string& name = run.items()[static_cast<std::size_t>(item)].params.as<SwitchParams>().triggers;
         if (const int rope = run.scene().findRope(name); rope >= 0) return run.partWorld().cutRope(rope);
-        if (const int target = run.find(name); target >= 0) run.items()[static_cast<std::size_t>(target)].kind->trigger(run, target);
+        if (const int target = run.find(name); target >= 0)
+            run.items()[static_cast<std::size_t>(target)].kind->trigger(run, target);
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     void draw(const PartDrawing& d) const override {
         const float r = static_cast<float>(itemOf(d).params.as<SwitchParams>().radius);
-        d.list.box(pt(d.run.itemPosition(d.item)), {r, 0.6f * r}, 0.0f, style(stateOf(d).hit ? "highlight" : "box", "box_outline"));
+        d.list.box(pt(d.run.itemPosition(d.item)), {r, 0.6f * r}, 0.0f,
+                   style(stateOf(d).hit ? "highlight" : "box", "box_outline"));
     }
 };
 

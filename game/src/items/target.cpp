@@ -10,14 +10,17 @@ struct TargetParams {
     int path = -1;       // index of the [[path]] it follows, or -1 (still)
 };
 
-constexpr PartKey kKeys[] = {kKindKey, kNameKey, kPositionKey, {"radius", "0.3", "m"}, {"path", "none", "the [[path]] it follows"}};
+constexpr PartKey kKeys[] = {
+    kKindKey, kNameKey, kPositionKey, {"radius", "0.3", "m"}, {"path", "none", "the [[path]] it follows"}};
 
 class TargetKind final : public PartKind {
 public:
     std::string_view name() const override { return "target"; }
     int order() const override { return 9; }
     int referenceOrder() const override { return 1; }
-    std::string_view summary() const override { return "a round mark, bounciness 0.5, that reports a ball's first touch; needs a name"; }
+    std::string_view summary() const override {
+        return "a round mark, bounciness 0.5, that reports a ball's first touch; needs a name";
+    }
     std::span<const PartKey> keys() const override { return kKeys; }
     bool needsName() const override { return true; }
     bool plays(PartRole role) const override {
@@ -47,7 +50,8 @@ public:
         ItemState& state = run.partState(item);
         if (state.hit) return;
         state.hit = true;
-        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name, point, 0});
+        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                    point, 0});
     }
     void draw(const PartDrawing& d) const override {
         const Vec2 at = d.run.itemPosition(d.item);

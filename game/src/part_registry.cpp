@@ -20,12 +20,14 @@ namespace {
 std::vector<ItemKind> sortedKinds() {
     std::vector<ItemKind> kinds = partKindsFromFiles();
     std::sort(kinds.begin(), kinds.end(), [](ItemKind a, ItemKind b) { return a->order() < b->order(); });
-    for (std::size_t i = 1; i < kinds.size(); ++i)
-        if (kinds[i]->order() == kinds[i - 1]->order() || findPartKind(kinds[i]->name()) != kinds[i]) {
-            std::fprintf(stderr, "part kinds '%s' and '%s' share an order or a name\n",
-                         std::string(kinds[i - 1]->name()).c_str(), std::string(kinds[i]->name()).c_str());
-            std::abort();
-        }
+    const auto clash = [](ItemKind a, ItemKind b) {
+        std::fprintf(stderr, "part kinds '%s' and '%s' share an order or a name\n", std::string(a->name()).c_str(),
+                     std::string(b->name()).c_str());
+        std::abort();
+    };
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+        for (std::size_t j = i + 1; j < kinds.size(); ++j)
+            if (kinds[i]->order() == kinds[j]->order() || kinds[i]->name() == kinds[j]->name()) clash(kinds[i], kinds[j]);
     return kinds;
 }
 
@@ -37,7 +39,7 @@ std::span<const ItemKind> allPartKinds() {
 }
 
 ItemKind findPartKind(std::string_view name) {
-    for (ItemKind kind : partKindsFromFiles())
+    for (ItemKind kind : allPartKinds())
         if (kind->name() == name) return kind;
     return nullptr;
 }

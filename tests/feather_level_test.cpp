@@ -25,7 +25,7 @@ SceneDesc loadFeather() {
 
 // A ramp placed as a script places it: centre and angle in degrees.
 std::vector<Placement> ramp(Vec2 centre, double degrees) {
-    return {{ItemKind::ramp, centre, degrees * std::numbers::pi / 180.0, "", {}, degrees}};
+    return {{partKind("ramp"), centre, degrees * std::numbers::pi / 180.0, "", {}, degrees}};
 }
 
 // Plays the level for its time limit with these placements; the goal frame, if reached.

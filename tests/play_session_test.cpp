@@ -116,23 +116,23 @@ std::uint64_t replayHash(const SceneDesc& level, const std::string& text, std::i
 TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned and removed", "[play]") {
     PlaySession s(workshop(), "workshop.toml", kFrame);
     CHECK(s.windowSize().height == kFrame.height + InventoryBar::kHeight);
-    CHECK(s.remaining(ItemKind::plank) == 2);
-    place(s, ItemKind::plank, {-2.02, 3.01});
+    CHECK(s.remaining(partKind("plank")) == 2);
+    place(s, partKind("plank"), {-2.02, 3.01});
     REQUIRE(s.placements().size() == 1);
     // Snapped to the 5 cm grid, so the script reads -2 and 3.
     CHECK(s.placements()[0].position.x == -2.0);
     CHECK(s.placements()[0].position.y == 3.0);
-    CHECK(s.remaining(ItemKind::plank) == 1);
+    CHECK(s.remaining(partKind("plank")) == 1);
     CHECK_THAT(s.message(), Catch::StartsWith("placed plank at [-2, 3]"));
 
     // Outside every zone: refused with the rule's reason, and the plank is back in the bar.
-    place(s, ItemKind::plank, {6.0, 3.0});
+    place(s, partKind("plank"), {6.0, 3.0});
     CHECK(s.placements().size() == 1);
     CHECK_THAT(s.message(), Catch::StartsWith("not placed: placement refused: plank at [6, 3] is not wholly inside a placement zone"));
-    CHECK(s.remaining(ItemKind::plank) == 1);
+    CHECK(s.remaining(partKind("plank")) == 1);
 
     // Onto the first plank: refused for the overlap.
-    place(s, ItemKind::plank, {-2.0, 3.0});
+    place(s, partKind("plank"), {-2.0, 3.0});
     CHECK_THAT(s.message(), Catch::Contains("overlaps placement 1 (plank)"));
 
     // The wheel turns a placed plank under the cursor by 15 degrees a notch; a ball does not turn.
@@ -142,7 +142,7 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
     s.key(Key::rightBracket, KeyAction::press);
     s.key(Key::rightBracket, KeyAction::repeat);
     CHECK(s.placements()[0].angleDegrees == -15.0);
-    place(s, ItemKind::heavy, {2.0, 4.0});
+    place(s, partKind("heavy"), {2.0, 4.0});
     REQUIRE(s.placements().size() == 2);
     moveTo(s, {2.0, 4.0});
     s.scrolled(1.0f);
@@ -162,7 +162,7 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
     CHECK_THAT(s.message(), Catch::StartsWith("not placed"));
 
     // The inventory runs out: the bar says so and nothing is dragged.
-    moveToPixel(s, *s.slotPixel(ItemKind::heavy));
+    moveToPixel(s, *s.slotPixel(partKind("heavy")));
     s.mouseButton(MouseButton::left, true);
     CHECK_THAT(s.message(), Catch::StartsWith("no heavy left: the level gives 1"));
     s.mouseButton(MouseButton::left, false);
@@ -170,16 +170,16 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
     // Right-click removes; Delete removes the one under the cursor.
     click(s, {3.0, 2.0}, MouseButton::right);
     CHECK(s.placements().size() == 1);
-    CHECK(s.remaining(ItemKind::heavy) == 1);
+    CHECK(s.remaining(partKind("heavy")) == 1);
     moveTo(s, {-2.0, 3.0});
     s.key(Key::deleteKey, KeyAction::press);
     CHECK(s.placements().empty());
 
     // Dropping on the bar puts a new item back.
-    moveToPixel(s, *s.slotPixel(ItemKind::plank));
+    moveToPixel(s, *s.slotPixel(partKind("plank")));
     s.mouseButton(MouseButton::left, true);
     moveTo(s, {0.0, 3.0});
-    moveToPixel(s, *s.slotPixel(ItemKind::heavy));
+    moveToPixel(s, *s.slotPixel(partKind("heavy")));
     s.mouseButton(MouseButton::left, false);
     CHECK(s.placements().empty());
     CHECK_THAT(s.message(), Catch::StartsWith("put back: plank"));
@@ -187,7 +187,7 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
 
 TEST_CASE("play: the debug keys pause, slow, show and clear trails, reset and quit", "[play]") {
     PlaySession s(workshop(), "workshop.toml", kFrame);
-    place(s, ItemKind::heavy, {0.0, 5.0});
+    place(s, partKind("heavy"), {0.0, 5.0});
     s.key(Key::space, KeyAction::press);
     REQUIRE(s.mode() == PlaySession::Mode::running);
     // Real-time pacing: 0.05 s at a 0.01 s step is five steps.
@@ -230,10 +230,10 @@ TEST_CASE("play: the debug keys pause, slow, show and clear trails, reset and qu
 TEST_CASE("play: the recorded script replays to the same state", "[play]") {
     const SceneDesc level = workshop();
     PlaySession s(level, "workshop.toml", kFrame);
-    place(s, ItemKind::plank, {-1.0, 2.0});
+    place(s, partKind("plank"), {-1.0, 2.0});
     moveTo(s, {-1.0, 2.0});
     s.scrolled(-1.0f);
-    place(s, ItemKind::heavy, {-1.0, 4.0});
+    place(s, partKind("heavy"), {-1.0, 4.0});
     // Aim by dragging from the cannon: the angle snaps to half degrees.
     moveTo(s, {-6.0, 0.6});
     s.mouseButton(MouseButton::left, true);

@@ -21,12 +21,6 @@ struct RandomPlay {
     std::vector<game::Action> actions;        ///< sorted by frame
 };
 
-/// True for the kinds whose placement takes an angle (planks, ramps and fans turn; a rocket pushes along it).
-inline bool placementTurns(game::ItemKind kind) {
-    using game::ItemKind;
-    return kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::fan || kind == ItemKind::rocket;
-}
-
 /// Placements of `level`'s inventory: each kind up to its count, each centre inside a random zone.
 /// Mostly the zone shrunk by the item's half-extent (so the item fits), one in five the whole zone
 /// (so the zone rule refuses some); overlaps are left to checkPlacements.
@@ -34,14 +28,13 @@ inline std::vector<game::Placement> randomPlacements(const game::SceneDesc& leve
     std::vector<game::Placement> placements;
     if (level.level.zones.empty()) return placements;
     for (const auto& [kindName, count] : level.level.inventory) {
-        const auto kind = std::find_if(std::begin(game::kAllItemKinds), std::end(game::kAllItemKinds),
-                                       [&](game::ItemKind k) { return game::itemKindName(k) == kindName; });
-        if (kind == std::end(game::kAllItemKinds)) continue;
+        const game::ItemKind kind = game::findPartKind(kindName);
+        if (!kind) continue;
         const int placed = rng.below(count + 1);
         for (int i = 0; i < placed; ++i) {
             game::Placement p;
-            p.kind = *kind;
-            if (placementTurns(p.kind)) {
+            p.kind = kind;
+            if (p.kind->turns()) {
                 // Whole degrees, as a player or script writes them; sometimes level, sometimes any.
                 p.angleDegrees = rng.chance(0.3) ? 0.0 : static_cast<double>(rng.below(360) - 180);
                 p.angle = game::scriptRadians(p.angleDegrees);
@@ -74,18 +67,15 @@ inline std::vector<game::Placement> randomPlacements(const game::SceneDesc& leve
 inline std::vector<game::Action> randomActions(const game::SceneDesc& level, const std::vector<game::Placement>& placements,
                                                std::int64_t steps, SceneRng& rng) {
     using game::ActionKind;
-    using game::ItemKind;
     std::vector<game::ItemDesc> items = level.level.items;
     for (const game::Placement& p : placements) items.push_back(game::placedItem(p));
     std::vector<std::string> cannons, bombs, toggles, targets, ropes;
     for (const game::ItemDesc& item : items) {
         if (item.name.empty()) continue;
-        if (item.kind == ItemKind::cannon) cannons.push_back(item.name);
-        if (item.kind == ItemKind::bomb) bombs.push_back(item.name);
-        if (item.kind == ItemKind::switchItem || item.kind == ItemKind::fan || item.kind == ItemKind::magnet || item.kind == ItemKind::rocket)
-            toggles.push_back(item.name);
-        if (item.kind == ItemKind::target || item.kind == ItemKind::bomb || item.kind == ItemKind::switchItem || item.kind == ItemKind::bucket)
-            targets.push_back(item.name);
+        if (item.kind->plays(game::PartRole::fire)) cannons.push_back(item.name);
+        if (item.kind->plays(game::PartRole::detonate)) bombs.push_back(item.name);
+        if (item.kind->plays(game::PartRole::toggle)) toggles.push_back(item.name);
+        if (item.kind->plays(game::PartRole::aimTarget)) targets.push_back(item.name);
     }
     for (const std::string& rope : level.ropeNames)
         if (!rope.empty()) ropes.push_back(rope);

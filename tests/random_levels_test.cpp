@@ -71,9 +71,7 @@ double fastest(const World& world) {
 /// (its lift), water (buoyancy lifts light balls), a kinematic path or a conveyor.
 bool hasEnergySource(const SceneDesc& level, const std::vector<ItemDesc>& items) {
     for (const ItemDesc& item : items)
-        if (item.kind == ItemKind::cannon || item.kind == ItemKind::bomb || item.kind == ItemKind::fan || item.kind == ItemKind::magnet ||
-            item.kind == ItemKind::rocket || item.kind == ItemKind::balloon || item.path >= 0)
-            return true;
+        if (item.kind->speedGiven(item, 1.0, 9.81, 1.0) > 0.0 || item.kind->path(item) >= 0) return true;
     for (const SegmentDef& s : level.segments)
         if (s.path >= 0 || s.surfaceSpeed != 0.0) return true;
     for (const CircleDef& c : level.circles)
@@ -111,26 +109,13 @@ double speedBound(const SceneDesc& level, const std::vector<ItemDesc>& items, do
     for (const ItemDesc& item : items) {
         const Aabb e = itemExtent(item);
         grow(e.min), grow(e.max);
-        for (const CircleDef& c : itemBodies(item.kind == ItemKind::cannon ? defaultItem(item.ammo, item.position) : item).circles)
+        for (const CircleDef& c : itemBodies(item).circles)
             if (c.motion == Motion::dynamic) lightest = std::min(lightest, c.mass), largest = std::max(largest, c.radius);
+        if (const auto shot = item.kind->shot(item)) lightest = std::min(lightest, shot->mass), largest = std::max(largest, shot->radius);
     }
     const double size = (extent.max - extent.min).length();
     double bound = speed + std::sqrt(2.0 * g * size) + g * seconds;
-    for (const ItemDesc& item : items) {
-        switch (item.kind) {
-        case ItemKind::cannon: bound += item.speed; break;
-        case ItemKind::fan: bound += item.speed; break;
-        case ItemKind::bomb: bound += item.strength / lightest; break;
-        case ItemKind::rocket: bound += item.thrust * item.burn / lightest; break;
-        case ItemKind::balloon: bound += 2.0 * g * seconds; break;
-        case ItemKind::magnet: {
-            const ItemBodies bodies = itemBodies(item);
-            if (bodies.magnet) bound += std::sqrt(2.0 * bodies.magnet->strength / (lightest * bodies.magnet->radius));
-            break;
-        }
-        default: break;
-        }
-    }
+    for (const ItemDesc& item : items) bound += item.kind->speedGiven(item, lightest, g, seconds);
     for (const Water& w : level.waters) bound += w.density * 3.14159265358979 * largest * largest / lightest * g * seconds;
     for (const NamedPath& named : level.paths) {
         const auto& keys = named.path.keys;

@@ -79,7 +79,7 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     // The window's frames are kept beside the replay's, to look at when a check fails.
     std::filesystem::remove_all(kWork);
     std::filesystem::create_directories(kWork);
-    const auto slot = session.slotPixel(ItemKind::ramp);
+    const auto slot = session.slotPixel(partKind("ramp"));
     REQUIRE(slot);
     // A ramp dropped on the floor, outside the zone, is refused with the reason and goes back.
     dragTo(session, *slot, session.pixelOf({2.0, 0.3}));
@@ -88,7 +88,7 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     session.mouseButton(MouseButton::left, false);
     CHECK(session.placements().empty());
     CHECK_THAT(session.message(), Catch::StartsWith("not placed: placement refused: ramp"));
-    CHECK(session.remaining(ItemKind::ramp) == 1);
+    CHECK(session.remaining(partKind("ramp")) == 1);
 
     // Then into the zone, turned twice by the wheel (2 x -15 degrees), and released.
     dragTo(session, *slot, session.pixelOf({-4.5, 2.5}));
@@ -99,7 +99,7 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     CHECK(session.placements()[0].position.x == Approx(-4.5));
     CHECK(session.placements()[0].position.y == Approx(2.5));
     CHECK(session.placements()[0].angleDegrees == -30.0);
-    CHECK(session.remaining(ItemKind::ramp) == 0);
+    CHECK(session.remaining(partKind("ramp")) == 0);
 
     // Space runs the machine; frames are drawn and presented as the window loop does.
     session.key(Key::space, KeyAction::press);

@@ -103,40 +103,7 @@ void InventoryBar::draw(render::DrawList& list, const std::function<int(ItemKind
 }
 
 void drawItemIcon(ItemKind kind, Vec2 centre, double size, bool available, render::DrawList& list) {
-    const Palette& palette = Palette::greybox();
-    const float r = static_cast<float>(0.5 * size);
-    const Point c = pt(centre);
-    Style ball = look("ball", "ball_outline");
-    switch (kind) {
-    case ItemKind::heavy: ball = look("ground", "ball_outline"); break;
-    case ItemKind::steel: ball = look("kinematic", "ball_outline"); break;
-    case ItemKind::balloon: ball = look("highlight", "ball_outline"); break;
-    default: break;
-    }
-    if (!available) ball.fill = ball.fill.withAlpha(0x60);
-    switch (kind) {
-    case ItemKind::plank:
-        list.capsule({c.x - r, c.y}, {c.x + r, c.y}, 0.12f * r, look("ground", "ground_outline"));
-        break;
-    case ItemKind::ramp:
-        list.capsule({c.x - r, c.y + 0.5f * r}, {c.x + r, c.y - 0.5f * r}, 0.12f * r, look("ground", "ground_outline"));
-        break;
-    case ItemKind::bumper: list.circle(c, 0.8f * r, look("box", "arrow", 3.0f)); break;
-    case ItemKind::bomb:
-        list.circle(c, 0.7f * r, look("ground_outline", "ball_outline"));
-        list.line({c.x, c.y + 0.7f * r}, {c.x + 0.3f * r, c.y + r}, 2.0f, palette["explosion"]);
-        break;
-    case ItemKind::magnet: list.circle(c, 0.8f * r, look("magnet", "ball_outline")); break;
-    case ItemKind::fan:
-        list.box({c.x - 0.5f * r, c.y}, {0.25f * r, 0.8f * r}, 0.0f, look("box", "box_outline"));
-        list.arrow({c.x - 0.1f * r, c.y}, {c.x + r, c.y}, 2.0f, palette["arrow"]);
-        break;
-    case ItemKind::rocket:
-        list.circle(c, 0.7f * r, look("box", "ball_outline"));
-        list.arrow({c.x - 0.5f * r, c.y}, {c.x + r, c.y}, 2.0f, palette["explosion"]);
-        break;
-    default: list.circle(c, 0.8f * r, ball); break;
-    }
+    kind->drawIcon(centre, size, available, list);
 }
 
 } // namespace rube::game

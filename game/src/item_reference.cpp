@@ -6,8 +6,15 @@
 
 namespace rube::game {
 
-std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name,
-                               std::initializer_list<ItemKind> kinds, std::string_view where) {
+int LevelDesc::find(std::string_view name) const {
+    for (std::size_t i = 0; i < items.size(); ++i)
+        if (!name.empty() && items[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name, PartRole role,
+                               std::string_view where) {
+    const std::vector<ItemKind> kinds = partKindsPlaying(role);
     const int index = level.find(name);
     const auto fits = [&](ItemKind kind) { return std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };
     if (index >= 0 && fits(level.items[static_cast<std::size_t>(index)].kind)) return "";

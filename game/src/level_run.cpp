@@ -2,8 +2,6 @@
 // what they mean (a target hit, a switch pressed, a bomb touched) and acts on it between steps.
 #include "level_run.hpp"
 
-#include "rube/physics/explosion.hpp"
-
 #include <algorithm>
 #include <cmath>
 
@@ -11,9 +9,6 @@ namespace rube::game {
 
 namespace {
 
-// A balloon is lifted by 2 |g| per second squared, so it rises at g: the effective gravity -g.
-// The physics has one gravity for all bodies, so the lift is added to its velocity each step.
-constexpr double kBalloonLift = 2.0;
 // A ball counts as at rest in a bucket below this speed ...
 constexpr double kRestSpeed = 0.3; // m/s
 // ... held for this long, so a ball bouncing through the bucket's middle does not count.
@@ -71,11 +66,6 @@ int LevelRun::find(std::string_view name) const {
 
 bool LevelRun::isProjectile(int circle) const { return projectile_[static_cast<std::size_t>(circle)] != 0; }
 
-bool LevelRun::isBalloon(int circle) const {
-    const int item = circleItem_[static_cast<std::size_t>(circle)];
-    return item >= 0 && items_[static_cast<std::size_t>(item)].kind == ItemKind::balloon;
-}
-
 Vec2 LevelRun::itemPosition(int item) const {
     const ItemState& state = states_[static_cast<std::size_t>(item)];
     if (state.firstCircle >= 0) return world_.circles()[static_cast<std::size_t>(state.firstCircle)].position;
@@ -84,8 +74,8 @@ Vec2 LevelRun::itemPosition(int item) const {
 
 Vec2 LevelRun::itemVelocity(int item) const {
     const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
-    if (desc.path >= 0) {
-        const KinematicPath& path = world_.paths()[static_cast<std::size_t>(desc.path)];
+    if (const int index = desc.kind->path(desc); index >= 0) {
+        const KinematicPath& path = world_.paths()[static_cast<std::size_t>(index)];
         return (path.offsetAt(world_.time() + kPathProbe) - path.offsetAt(world_.time())) / kPathProbe;
     }
     const ItemState& state = states_[static_cast<std::size_t>(item)];
@@ -94,14 +84,15 @@ Vec2 LevelRun::itemVelocity(int item) const {
 }
 
 Vec2 LevelRun::launchVelocity(int cannon) const {
-    return aimInDirection(states_[static_cast<std::size_t>(cannon)].aim, items_[static_cast<std::size_t>(cannon)].speed).velocity;
+    const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
+    return aimInDirection(states_[static_cast<std::size_t>(cannon)].aim, item.kind->muzzleSpeed(item)).velocity;
 }
 
 void LevelRun::aim(int cannon, double angle) { states_[static_cast<std::size_t>(cannon)].aim = angle; }
 
 std::string LevelRun::aimAtPoint(int cannon, Vec2 point, bool highArc) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
-    const GravityShot shot = aimGravityShot(item.position, point, item.speed, world_.def().gravity);
+    const GravityShot shot = aimGravityShot(item.position, point, item.kind->muzzleSpeed(item), world_.def().gravity);
     if (!shot.reachable()) return "cannon '" + item.name + "' cannot reach " + formatPair(point.x, point.y) + ": " + shot.reason;
     // At exactly the minimum speed there is one arc, reported as the low one.
     const Arc& arc = highArc && shot.highArc ? *shot.highArc : *shot.lowArc;
@@ -113,10 +104,11 @@ std::string LevelRun::aimAtItem(int cannon, int target, bool highArc) {
     const Vec2 velocity = itemVelocity(target);
     if (velocity == Vec2{}) return aimAtPoint(cannon, itemPosition(target), highArc);
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
-    const auto intercept = leadMovingTarget(item.position, itemPosition(target), velocity, item.speed, world_.def().gravity);
+    const double speed = item.kind->muzzleSpeed(item);
+    const auto intercept = leadMovingTarget(item.position, itemPosition(target), velocity, speed, world_.def().gravity);
     if (!intercept)
         return "cannon '" + item.name + "' cannot catch '" + items_[static_cast<std::size_t>(target)].name +
-               "' at speed " + formatNumber(item.speed) + " m/s";
+               "' at speed " + formatNumber(speed) + " m/s";
     aim(cannon, intercept->shot.angle);
     return "";
 }
@@ -124,8 +116,7 @@ std::string LevelRun::aimAtItem(int cannon, int target, bool highArc) {
 void LevelRun::fire(int cannon) {
     ItemState& state = states_[static_cast<std::size_t>(cannon)];
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
-    ItemDesc ball = defaultItem(item.ammo, item.position);
-    CircleDef def = itemBodies(ball).circles.front();
+    CircleDef def = *item.kind->shot(item);
     def.velocity = launchVelocity(cannon);
     world_.addCircle(def);
     circleItem_.push_back(-1);
@@ -137,7 +128,7 @@ void LevelRun::fire(int cannon) {
 std::string LevelRun::fireWhen(int cannon, int target) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
     ItemState& state = states_[static_cast<std::size_t>(cannon)];
-    const ShotTiming timing = timeFixedAngleShot(item.position, Vec2::fromAngle(state.aim), item.speed, itemPosition(target),
+    const ShotTiming timing = timeFixedAngleShot(item.position, Vec2::fromAngle(state.aim), item.kind->muzzleSpeed(item), itemPosition(target),
                                                  itemVelocity(target), world_.def().gravity);
     if (!timing.possible)
         return "cannon '" + item.name + "' cannot time a shot at '" + items_[static_cast<std::size_t>(target)].name +
@@ -148,70 +139,17 @@ std::string LevelRun::fireWhen(int cannon, int target) {
     return "";
 }
 
-void LevelRun::detonate(int bomb) {
-    ItemState& state = states_[static_cast<std::size_t>(bomb)];
-    if (state.detonatedAt) return; // a bomb goes off once
-    const ItemDesc& item = items_[static_cast<std::size_t>(bomb)];
-    state.detonatedAt = world_.time();
-    Explosion explosion;
-    explosion.centre = item.position;
-    explosion.radius = item.blastRadius;
-    explosion.strength = item.strength;
-    const std::vector<int> pushed = applyExplosion(world_, explosion);
-    // The casing is gone: shrunk to a speck, since a World cannot remove a body.
-    if (state.firstCircle >= 0) world_.circles()[static_cast<std::size_t>(state.firstCircle)].radius = 1e-4;
-    events_.push_back({EventKind::explosion, frame(), world_.time(), item.name, item.position, static_cast<int>(pushed.size())});
-}
+void LevelRun::detonate(int bomb) { toggle(bomb); }
 
-void LevelRun::toggle(int item) {
-    const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
-    if (desc.kind == ItemKind::switchItem)
-        if (const int rope = scene_.findRope(desc.triggers); rope >= 0) return world_.cutRope(rope);
-    const int target = desc.kind == ItemKind::switchItem ? find(desc.triggers) : item;
-    if (target < 0) return;
-    const ItemKind kind = items_[static_cast<std::size_t>(target)].kind;
-    const int field = states_[static_cast<std::size_t>(target)].field;
-    if (kind == ItemKind::cannon) fire(target);
-    else if (kind == ItemKind::bomb) detonate(target);
-    else if (kind == ItemKind::magnet) world_.fields().magnets[static_cast<std::size_t>(field)].on ^= true;
-    else if (kind == ItemKind::fan) world_.fields().winds[static_cast<std::size_t>(field)].on ^= true;
-    else if (kind == ItemKind::rocket) {
-        // A rocket lights once, now, and burns its full time; lit or burnt out, it cannot be lit again.
-        Thruster& thruster = world_.fields().thrusters[static_cast<std::size_t>(field)];
-        if (std::isinf(thruster.start)) {
-            thruster.start = world_.time();
-            thruster.end = world_.time() + items_[static_cast<std::size_t>(target)].burn;
-        }
-    }
-}
+void LevelRun::toggle(int item) { items_[static_cast<std::size_t>(item)].kind->trigger(*this, item); }
 
 void LevelRun::cutRope(std::string_view name) {
     if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(rope);
 }
 
-void LevelRun::markHit(int item, Vec2 point) {
-    ItemState& state = states_[static_cast<std::size_t>(item)];
-    const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
-    switch (desc.kind) {
-    case ItemKind::target:
-    case ItemKind::switchItem:
-        // Only the first touch is news: a ball resting on a target would report it every step.
-        if (state.hit) return;
-        state.hit = true;
-        events_.push_back({EventKind::hit, frame(), world_.time(), desc.name, point, 0});
-        if (desc.kind == ItemKind::switchItem) toggle(item);
-        break;
-    case ItemKind::bomb:
-        if (desc.trigger == Trigger::impact) detonate(item);
-        break;
-    default: break;
-    }
-}
-
 void LevelRun::step() {
     const double dt = world_.def().timeStep;
-    for (std::size_t i = 0; i < world_.circles().size(); ++i)
-        if (isBalloon(static_cast<int>(i))) world_.circles()[i].velocity -= world_.def().gravity * (kBalloonLift * dt);
+    for (std::size_t i = 0; i < items_.size(); ++i) items_[i].kind->beforeStep(*this, static_cast<int>(i));
     world_.step();
     for (const Impact& impact : world_.lastImpacts()) {
         // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact
@@ -221,14 +159,10 @@ void LevelRun::step() {
         else if (impact.otherKind == Other::body && impact.circle >= 0) struck = impact.circle;
         if (struck < 0) continue;
         const int item = circleItem_[static_cast<std::size_t>(struck)];
-        if (item >= 0) markHit(item, impact.pointOfImpact);
+        if (item >= 0) items_[static_cast<std::size_t>(item)].kind->hit(*this, item, impact.pointOfImpact);
     }
     for (std::size_t i = 0; i < items_.size(); ++i) {
-        const ItemDesc& item = items_[i];
-        if (item.kind == ItemKind::bomb && item.trigger == Trigger::timer && world_.time() >= item.fuse - 1e-9)
-            detonate(static_cast<int>(i));
-        if (item.kind == ItemKind::cannon && item.fireAt && !states_[i].fired && world_.time() >= *item.fireAt - 1e-9)
-            fire(static_cast<int>(i));
+        items_[i].kind->afterStep(*this, static_cast<int>(i));
         if (states_[i].timedShot && world_.time() >= *states_[i].timedShot - 0.5 * dt) {
             states_[i].timedShot.reset();
             fire(static_cast<int>(i));
@@ -238,11 +172,9 @@ void LevelRun::step() {
 }
 
 bool LevelRun::ballRestsIn(const ItemDesc& bucket) const {
-    const double half = 0.5 * bucket.size;
     for (const Circle& c : world_.circles()) {
         if (c.motion != Motion::dynamic || c.velocity.length() > kRestSpeed) continue;
-        const Vec2 p = c.position - bucket.position;
-        if (std::abs(p.x) < half && p.y > 0.0 && p.y < bucket.height) return true;
+        if (bucket.kind->holds(bucket, c.position)) return true;
     }
     return false;
 }
@@ -261,7 +193,7 @@ void LevelRun::checkGoal() {
     case GoalKind::allTargets:
         reached = true;
         for (std::size_t i = 0; i < items_.size(); ++i)
-            if (items_[i].kind == ItemKind::target && !states_[i].hit) reached = false;
+            if (items_[i].kind->plays(PartRole::goalTarget) && !states_[i].hit) reached = false;
         break;
     case GoalKind::ballInBucket: {
         const int bucket = find(goal->item);

@@ -4,6 +4,7 @@
 /// targets hit, cannons fired, bombs going off, and the goal reached.
 
 #include "placement.hpp"
+#include "scene.hpp"
 
 #include "rube/physics/aim.hpp"
 
@@ -66,8 +67,8 @@ public:
     int find(std::string_view name) const;
     /// True when World circle `circle` was shot from a cannon.
     bool isProjectile(int circle) const;
-    /// True when World circle `circle` is a balloon.
-    bool isBalloon(int circle) const;
+    /// The scene the level was built from.
+    const SceneDesc& scene() const { return scene_; }
 
     /// Where an item is now (targets on a path move) and how fast it moves, m/s.
     Vec2 itemPosition(int item) const;
@@ -87,18 +88,23 @@ public:
     /// Times a shot along the cannon's present aim to meet `target` (moving at its velocity now) and
     /// fires it at that step, or now when no wait is needed; "" or why no such shot exists.
     std::string fireWhen(int cannon, int target);
-    /// Sets a bomb off now.
+    /// Sets a bomb off now (what its kind does when triggered).
     void detonate(int bomb);
-    /// Flips a switch as if a ball had hit it (the cannon or bomb it names goes off, the fan or magnet it
-    /// names turns on or off, the rope it names is cut, the rocket it names lights), or turns a fan or magnet
-    /// itself on or off, or lights a rocket.
+    /// Triggers an item as a switch would (its kind says what that does: a switch triggers what it
+    /// names or cuts its rope, a fan or magnet turns on or off, a rocket lights).
     void toggle(int item);
     /// Cuts the [[rope]] called `name` (a cut rope stays cut; an unknown name does nothing).
     void cutRope(std::string_view name);
 
+    /// For the kinds' own files (game/src/items), which act on the world: the world to change.
+    World& partWorld() { return world_; }
+    /// For the kinds' own files: the state of item `item`, to change.
+    ItemState& partState(int item) { return states_[static_cast<std::size_t>(item)]; }
+    /// For the kinds' own files: records that `event` happened.
+    void report(GameEvent event) { events_.push_back(std::move(event)); }
+
 private:
     void addItem(const ItemDesc& item);
-    void markHit(int item, Vec2 point);
     void checkGoal();
     bool ballRestsIn(const ItemDesc& bucket) const;
 

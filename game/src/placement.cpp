@@ -47,8 +47,8 @@ std::string itemWords(const ItemDesc& item) {
     return words;
 }
 
-// Every fixed part: the scene's circles and segments, and each fixed item's bodies (a cannon,
-// having none, still takes the room of its barrel).
+// Every fixed part: the scene's circles and segments, and each fixed item's room (its bodies; a
+// cannon, having none, still takes the room of its barrel).
 std::vector<Capsule> fixedParts(const SceneDesc& scene) {
     std::vector<Capsule> parts;
     for (std::size_t i = 0; i < scene.circles.size(); ++i)
@@ -58,10 +58,7 @@ std::vector<Capsule> fixedParts(const SceneDesc& scene) {
         parts.push_back({scene.segments[i].a, scene.segments[i].b, scene.segments[i].radius,
                          "the fixed segment " + std::to_string(i) + " (" + formatPair(scene.segments[i].a.x, scene.segments[i].a.y) +
                              " to " + formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")"});
-    for (const ItemDesc& item : scene.level.items) {
-        if (item.kind == ItemKind::cannon) parts.push_back({item.position, item.position, 0.6, itemWords(item)});
-        else addBodies(itemBodies(item), itemWords(item), parts);
-    }
+    for (const ItemDesc& item : scene.level.items) addBodies(item.kind->room(item), itemWords(item), parts);
     return parts;
 }
 

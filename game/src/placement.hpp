@@ -10,7 +10,7 @@ namespace rube::game {
 
 /// One item the player places from the inventory.
 struct Placement {
-    ItemKind kind = ItemKind::plank; ///< must be in the level's inventory
+    ItemKind kind = nullptr;         ///< must be in the level's inventory
     Vec2 position;                   ///< centre
     double angle = 0.0;              ///< radians; planks, ramps and fans turn
     std::string name;                ///< optional, so scripts can refer to it later

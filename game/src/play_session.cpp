@@ -29,7 +29,6 @@ constexpr int kMostStepsPerCall = 8;    // advance() drops time beyond this many
 constexpr double kSlowMotion = 0.1;     // S: the fraction of real time the machine runs at
 constexpr double kTrailSeconds = 2.0;
 constexpr std::size_t kTrailPoints = 512;
-constexpr double kCannonPick = 0.6;     // m: a cannon is picked within this of its pivot
 
 render::Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
@@ -44,7 +43,9 @@ double normalDegrees(double degrees) {
     return degrees;
 }
 
-bool turns(ItemKind kind) { return kind == ItemKind::plank || kind == ItemKind::ramp || kind == ItemKind::fan || kind == ItemKind::rocket; }
+// The levels' items a cursor picks: cannons to aim, and what a click uses while running.
+bool aimable(ItemKind kind) { return kind->plays(PartRole::fire); }
+bool usable(ItemKind kind) { return kind->clickAction().has_value(); }
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 ab = b - a;
@@ -63,8 +64,8 @@ render::Camera levelCamera(const SceneDesc& level, render::FrameSize frame) {
 
 std::vector<ItemKind> stockOf(const SceneDesc& level) {
     std::vector<ItemKind> kinds;
-    for (ItemKind kind : kAllItemKinds)
-        if (level.level.inventory.count(std::string(itemKindName(kind))) != 0) kinds.push_back(kind);
+    for (ItemKind kind : allPartKinds())
+        if (level.level.inventory.count(std::string(kind->name())) != 0) kinds.push_back(kind);
     return kinds;
 }
 
@@ -159,7 +160,7 @@ void PlaySession::mouseButton(MouseButton button, bool pressed) {
         updateDrag();
         return;
     }
-    if (const int cannon = levelItemAtCursor({ItemKind::cannon}); cannon >= 0) {
+    if (const int cannon = levelItemAtCursor(aimable); cannon >= 0) {
         aiming_ = cannon;
         aimAtCursor();
         return;
@@ -178,7 +179,7 @@ void PlaySession::scrolled(float notches) {
     if (clicks == 0 || run_) return;
     if (!drag_) {
         // Over a cannon, the wheel fine-tunes its aim.
-        if (const int cannon = levelItemAtCursor({ItemKind::cannon}); cannon >= 0) {
+        if (const int cannon = levelItemAtCursor(aimable); cannon >= 0) {
             const double now = preview_->states()[static_cast<std::size_t>(cannon)].aim * 180.0 / std::numbers::pi;
             Action a;
             a.kind = ActionKind::aim;
@@ -282,7 +283,7 @@ void PlaySession::turn(double degrees) {
     const int hovered = p ? -1 : placedItemAtCursor();
     if (!p && hovered >= 0) p = &placements_[static_cast<std::size_t>(hovered)];
     if (!p) return;
-    if (!turns(p->kind)) {
+    if (!p->kind->turns()) {
         say("a " + std::string(itemKindName(p->kind)) + " has no angle to turn", "magnet");
         return;
     }
@@ -337,20 +338,14 @@ int PlaySession::placedItemAtCursor() const {
     return -1;
 }
 
-int PlaySession::levelItemAtCursor(std::initializer_list<ItemKind> kinds) const {
+int PlaySession::levelItemAtCursor(bool (*fits)(ItemKind)) const {
     const LevelRun& run = run_ ? *run_ : *preview_;
     const float ppm = bar_.windowCamera().pixelsPerMetre(bar_.windowSize());
     const double tolerance = kPickPixels / ppm;
     for (std::size_t i = 0; i < level_.level.items.size(); ++i) {
         const ItemDesc& item = level_.level.items[i];
-        if (std::find(kinds.begin(), kinds.end(), item.kind) == kinds.end()) continue;
-        if (item.kind == ItemKind::fan) {
-            const Aabb box = itemExtent(item);
-            if (box.contains(cursorWorld_)) return static_cast<int>(i);
-            continue;
-        }
-        const double reach = item.kind == ItemKind::cannon ? kCannonPick : item.size;
-        if (cursorWorld_.distance(run.itemPosition(static_cast<int>(i))) <= reach + tolerance) return static_cast<int>(i);
+        if (fits(item.kind) && item.kind->picked(item, run.itemPosition(static_cast<int>(i)), cursorWorld_, tolerance))
+            return static_cast<int>(i);
     }
     return -1;
 }
@@ -435,7 +430,7 @@ void PlaySession::takeByHand(ActionKind kind, int item) {
 }
 
 void PlaySession::useItemAtCursor() {
-    const int item = levelItemAtCursor({ItemKind::cannon, ItemKind::bomb, ItemKind::switchItem, ItemKind::fan, ItemKind::magnet, ItemKind::rocket});
+    const int item = levelItemAtCursor(usable);
     if (item < 0) return;
     const ItemDesc& desc = level_.level.items[static_cast<std::size_t>(item)];
     const ItemState& state = run_->states()[static_cast<std::size_t>(item)];
@@ -443,17 +438,8 @@ void PlaySession::useItemAtCursor() {
         say("this " + std::string(itemKindName(desc.kind)) + " has no name, so a script cannot use it: name it in the level", "magnet");
         return;
     }
-    switch (desc.kind) {
-    case ItemKind::cannon:
-        if (state.fired) say(desc.name + " has fired already", "magnet");
-        else takeByHand(ActionKind::fire, item);
-        break;
-    case ItemKind::bomb:
-        if (state.detonatedAt) say(desc.name + " went off already", "magnet");
-        else takeByHand(ActionKind::detonate, item);
-        break;
-    default: takeByHand(ActionKind::toggle, item); break;
-    }
+    if (const std::string spent = desc.kind->spent(desc, state); !spent.empty()) say(spent, "magnet");
+    else takeByHand(*desc.kind->clickAction(), item);
 }
 
 // ---------------------------------------------------------------------------------------------

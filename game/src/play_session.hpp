@@ -104,7 +104,7 @@ private:
     void aimAtCursor();
     void useItemAtCursor();
     int placedItemAtCursor() const;
-    int levelItemAtCursor(std::initializer_list<ItemKind> kinds) const;
+    int levelItemAtCursor(bool (*fits)(ItemKind)) const;
     void takeByHand(ActionKind kind, int item);
     void takeScripted();
     void say(std::string text, const char* colour = "hud_text");

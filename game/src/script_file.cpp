@@ -29,9 +29,8 @@ constexpr std::string_view kArcNames[] = {"low", "high"};
 constexpr std::int64_t kMaxSteps = 216'000;
 
 // The item an action or expectation names must exist and be of the kind it acts on.
-bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level,
-               std::initializer_list<ItemKind> kinds) {
-    std::string message = itemReferenceError(level.level, key, name, kinds, " in level '" + level.name + "'");
+bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level, PartRole role) {
+    std::string message = itemReferenceError(level.level, key, name, role, " in level '" + level.name + "'");
     if (message.empty()) return true;
     table.error(table.valuePlace(key), std::move(message));
     return false;
@@ -55,8 +54,8 @@ void readCapture(TableReader& root, ScriptDesc& script) {
 
 void readPlacements(TableReader& root, ScriptDesc& script) {
     std::vector<std::string_view> placeable;
-    for (ItemKind kind : kAllItemKinds)
-        if (isPlaceable(kind)) placeable.push_back(itemKindName(kind));
+    for (ItemKind kind : allPartKinds())
+        if (kind->placeable()) placeable.push_back(kind->name());
     for (const toml::table* table : root.arrayOfTables("place")) {
         TableReader place(*table, "in [[place]]", kPlaceKeys, root.diagnostics());
         Placement p;
@@ -69,8 +68,7 @@ void readPlacements(TableReader& root, ScriptDesc& script) {
         p.name = place.string("name").value_or("");
         p.place = place.tablePlace();
         if (!kind || !position) continue;
-        p.kind = std::find_if(std::begin(kAllItemKinds), std::end(kAllItemKinds),
-                              [&](ItemKind k) { return itemKindName(k) == placeable[*kind]; })[0];
+        p.kind = partKind(placeable[*kind]);
         p.position = *position;
         script.placements.push_back(p);
     }
@@ -104,14 +102,14 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     if (a.item.empty()) return;
     switch (kind) {
     case ActionKind::rotate:
-        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        checkItem(action, "item", a.item, level, PartRole::fire);
         if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0}, Need::required)) {
             a.angleDegrees = *angle;
             a.angle = scriptRadians(*angle);
         }
         break;
     case ActionKind::aim: {
-        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        checkItem(action, "item", a.item, level, PartRole::fire);
         if (const auto angle = action.number("angle", NumberRange{-360.0, 360.0})) {
             a.angleDegrees = *angle;
             a.angle = scriptRadians(*angle);
@@ -121,12 +119,12 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         if (const auto arc = action.choice("arc", kArcNames)) a.highArc = *arc == 1;
         const int ways = (action.find("angle") ? 1 : 0) + (action.find("point") ? 1 : 0) + (action.find("target") ? 1 : 0);
         if (ways != 1) action.error(action.tablePlace(), "an aim needs exactly one of angle, point or target, got " + std::to_string(ways));
-        if (!a.target.empty()) checkItem(action, "target", a.target, level, {ItemKind::target, ItemKind::bomb, ItemKind::switchItem, ItemKind::bucket});
+        if (!a.target.empty()) checkItem(action, "target", a.target, level, PartRole::aimTarget);
         break;
     }
-    case ActionKind::fire: checkItem(action, "item", a.item, level, {ItemKind::cannon}); break;
-    case ActionKind::detonate: checkItem(action, "item", a.item, level, {ItemKind::bomb}); break;
-    case ActionKind::toggle: checkItem(action, "item", a.item, level, {ItemKind::switchItem, ItemKind::fan, ItemKind::magnet, ItemKind::rocket}); break;
+    case ActionKind::fire: checkItem(action, "item", a.item, level, PartRole::fire); break;
+    case ActionKind::detonate: checkItem(action, "item", a.item, level, PartRole::detonate); break;
+    case ActionKind::toggle: checkItem(action, "item", a.item, level, PartRole::toggle); break;
     case ActionKind::cut:
         // Ropes are not items: they are the level's [[rope]] tables, named there.
         if (level.findRope(a.item) < 0) {
@@ -139,9 +137,9 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         break;
     case ActionKind::fireWhen:
         // The cannon keeps its aim; only the moment of firing is worked out, when the action is taken.
-        checkItem(action, "item", a.item, level, {ItemKind::cannon});
+        checkItem(action, "item", a.item, level, PartRole::fire);
         a.target = action.string("target", Need::required).value_or("");
-        if (!a.target.empty()) checkItem(action, "target", a.target, level, {ItemKind::target, ItemKind::bomb, ItemKind::switchItem, ItemKind::bucket});
+        if (!a.target.empty()) checkItem(action, "target", a.target, level, PartRole::aimTarget);
         break;
     }
     script.actions.push_back(a);
@@ -166,15 +164,15 @@ void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& scr
         } else if (const auto hit = expect.string("hit")) {
             e.kind = EventKind::hit;
             e.item = *hit;
-            checkItem(expect, "hit", *hit, level, {ItemKind::target, ItemKind::switchItem});
+            checkItem(expect, "hit", *hit, level, PartRole::hitReport);
         } else if (const auto shot = expect.string("shot")) {
             e.kind = EventKind::shot;
             e.item = *shot;
-            checkItem(expect, "shot", *shot, level, {ItemKind::cannon});
+            checkItem(expect, "shot", *shot, level, PartRole::fire);
         } else if (const auto boom = expect.string("explosion")) {
             e.kind = EventKind::explosion;
             e.item = *boom;
-            checkItem(expect, "explosion", *boom, level, {ItemKind::bomb});
+            checkItem(expect, "explosion", *boom, level, PartRole::detonate);
         }
         if (before) e.beforeFrame = *before;
         script.expectations.push_back(e);

@@ -1,0 +1,174 @@
+#pragma once
+/// What the kinds' own files share: the drawing helpers, the board thickness, the reading ranges,
+/// and the bases of the kinds that differ only in numbers (balls, boards). Internal to game/src/items.
+
+#include "level_run.hpp"
+#include "part_kind.hpp"
+#include "scene_reading.hpp"
+
+#include "rube/render/draw_list.hpp"
+#include "rube/render/palette.hpp"
+
+#include <numbers>
+
+namespace rube::game::parts {
+
+/// Half the thickness of planks, ramps, bucket walls and a fan's housing: thick enough to see, thin enough to place, m.
+inline constexpr double kBoardRadius = 0.05;
+/// A single item beyond this size is a typo for another unit, not a part of a puzzle, m.
+inline constexpr double kMaxItemSize = 100.0;
+/// The range of a size key: positive, at most kMaxItemSize.
+inline const NumberRange kSizeRange{0.0, kMaxItemSize, true};
+/// The range of an angle key, degrees.
+inline const NumberRange kAngleRange{-360.0, 360.0};
+/// An outline's stroke, pixels.
+inline constexpr float kOutline = 1.5f;
+
+/// Degrees as files write them to radians.
+inline double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+/// A point for the renderer.
+inline render::Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
+/// A fill and an outline from the greybox palette, by role.
+inline render::Style style(const char* fill, const char* outline, float width = kOutline) {
+    const render::Palette& p = render::Palette::greybox();
+    return {p[fill], p[outline], width};
+}
+/// A material of bounciness `c` (a pair's bounciness is the product of both, lecture 3).
+inline Material bouncy(double c) {
+    Material m;
+    m.bounciness = c;
+    return m;
+}
+/// A fixed (or, on a path, kinematic) round part of `radius` at the item's position.
+inline CircleDef roundPart(const ItemDesc& item, double radius, double bounciness, int path = -1) {
+    CircleDef part;
+    part.position = item.position;
+    part.radius = radius;
+    part.material = bouncy(bounciness);
+    part.motion = path >= 0 ? Motion::kinematic : Motion::fixed;
+    part.path = path;
+    return part;
+}
+/// The item's state in the run.
+inline const ItemState& stateOf(const PartDrawing& d) { return d.run.states()[static_cast<std::size_t>(d.item)]; }
+/// The item in the run.
+inline const ItemDesc& itemOf(const PartDrawing& d) { return d.run.items()[static_cast<std::size_t>(d.item)]; }
+
+/// A ball's parameters: every ball kind has these and nothing more.
+struct BallParams {
+    double radius = 0.3; ///< m
+    Vec2 velocity;       ///< initial velocity, m/s
+};
+
+/// The keys of a ball.
+inline constexpr PartKey kBallKeys[] = {
+    kKindKey, kNameKey, kPositionKey, {"radius", "as above", "m"}, {"velocity", "[0, 0]", "initial velocity, m/s"}};
+
+/// A dynamic ball: the kinds differ in radius, mass, bounciness and look only.
+class BallKind : public PartKind {
+public:
+    bool isBall() const override { return true; }
+    bool placeable() const override { return true; }
+    std::span<const PartKey> keys() const override { return kBallKeys; }
+    ItemDesc make(Vec2 position) const override {
+        ItemDesc item;
+        item.kind = this;
+        item.position = position;
+        item.params = PartParams(BallParams{radius(), {}});
+        return item;
+    }
+    void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
+        (void)reading;
+        BallParams& p = item.params.as<BallParams>();
+        if (const auto r = table.number("radius", kSizeRange)) p.radius = *r;
+        if (const auto v = table.vec2("velocity")) p.velocity = *v;
+    }
+    ItemBodies bodies(const ItemDesc& item) const override {
+        const BallParams& p = item.params.as<BallParams>();
+        CircleDef ball;
+        ball.position = item.position;
+        ball.velocity = p.velocity;
+        ball.radius = p.radius;
+        ball.mass = mass();
+        ball.material = bouncy(bounciness());
+        ball.magnetic = magnetic();
+        ItemBodies bodies;
+        bodies.circles.push_back(ball);
+        return bodies;
+    }
+    std::optional<CircleDef> shot(const ItemDesc& item) const override { return bodies(item).circles.front(); }
+    void draw(const PartDrawing& d) const override {
+        const ItemState& state = stateOf(d);
+        if (state.firstCircle < 0) return;
+        const Circle& c = d.run.world().circles()[static_cast<std::size_t>(state.firstCircle)];
+        decorateBehind(c, d.list);
+        d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()),
+                               look());
+        decorateFront(c, d.list);
+    }
+    void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {
+        render::Style ball = look();
+        if (!available) ball.fill = ball.fill.withAlpha(0x60);
+        list.circle(pt(centre), 0.8f * static_cast<float>(0.5 * size), ball);
+    }
+
+protected:
+    /// Default radius, m.
+    virtual double radius() const = 0;
+    /// Mass, kg.
+    virtual double mass() const = 0;
+    /// Bounciness C.
+    virtual double bounciness() const = 0;
+    /// True when magnets pull it.
+    virtual bool magnetic() const { return false; }
+    /// Its fill and outline.
+    virtual render::Style look() const { return style("ball", "ball_outline"); }
+    /// Drawn before the ball (a balloon's string).
+    virtual void decorateBehind(const Circle& c, render::DrawList& list) const { (void)c, (void)list; }
+    /// Drawn over the ball (a bouncy ball's ring).
+    virtual void decorateFront(const Circle& c, render::DrawList& list) const { (void)c, (void)list; }
+};
+
+/// A board's parameters.
+struct BoardParams {
+    double length = 2.0; ///< m
+};
+
+/// The keys of a board.
+inline constexpr PartKey kBoardKeys[] = {
+    kKindKey, kNameKey, kPositionKey, {"angle", "0", "tilt, degrees"}, {"length", "as above", "m"}};
+
+/// A fixed straight board, centred on its position and tilted by its angle: planks and ramps.
+class BoardKind : public PartKind {
+public:
+    bool placeable() const override { return true; }
+    bool turns() const override { return true; }
+    std::span<const PartKey> keys() const override { return kBoardKeys; }
+    ItemDesc make(Vec2 position) const override {
+        ItemDesc item;
+        item.kind = this;
+        item.position = position;
+        item.params = PartParams(BoardParams{length()});
+        return item;
+    }
+    void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
+        (void)reading;
+        if (const auto a = table.number("angle", kAngleRange)) item.angle = radians(*a);
+        if (const auto l = table.number("length", kSizeRange)) item.params.as<BoardParams>().length = *l;
+    }
+    ItemBodies bodies(const ItemDesc& item) const override {
+        const Vec2 half = Vec2::fromAngle(item.angle) * (0.5 * item.params.as<BoardParams>().length);
+        ItemBodies bodies;
+        bodies.segments.push_back({item.position - half, item.position + half, kBoardRadius, bouncy(bounciness()), -1});
+        return bodies;
+    }
+    void draw(const PartDrawing& d) const override { (void)d; } // drawn with the world's segments
+
+protected:
+    /// Default length, m.
+    virtual double length() const = 0;
+    /// Bounciness C.
+    virtual double bounciness() const = 0;
+};
+
+} // namespace rube::game::parts

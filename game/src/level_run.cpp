@@ -36,13 +36,13 @@ void LevelRun::addItem(const ItemDesc& item) {
     state.aim = item.angle;
     const ItemBodies bodies = itemBodies(item);
     for (const CircleDef& c : bodies.circles) {
-        const int index = world_.addCircle(c);
+        const int index = world_.slot(world_.addCircle(c));
         if (state.firstCircle < 0) state.firstCircle = index;
         circleItem_.push_back(static_cast<int>(items_.size()));
         projectile_.push_back(0);
     }
     for (const SegmentDef& s : bodies.segments) {
-        const int index = world_.addSegment(s);
+        const int index = world_.slot(world_.addSegment(s));
         if (state.firstSegment < 0) state.firstSegment = index;
     }
     Fields& fields = world_.fields();
@@ -57,7 +57,7 @@ void LevelRun::addItem(const ItemDesc& item) {
     if (bodies.thruster) {
         state.field = static_cast<int>(fields.thrusters.size());
         fields.thrusters.push_back(*bodies.thruster);
-        fields.thrusters.back().circle = state.firstCircle;
+        fields.thrusters.back().circle = state.firstCircle >= 0 ? world_.circleId(state.firstCircle) : CircleId{};
     }
     items_.push_back(item);
     states_.push_back(state);
@@ -157,16 +157,16 @@ void LevelRun::detonate(int bomb) {
     explosion.centre = item.position;
     explosion.radius = item.blastRadius;
     explosion.strength = item.strength;
-    const std::vector<int> pushed = applyExplosion(world_, explosion);
+    const std::vector<CircleId> pushed = applyExplosion(world_, explosion);
     // The casing is gone: shrunk to a speck, since a World cannot remove a body.
-    if (state.firstCircle >= 0) world_.circles()[static_cast<std::size_t>(state.firstCircle)].radius = 1e-4;
+    if (state.firstCircle >= 0) world_.setRadius(world_.circleId(state.firstCircle), 1e-4);
     events_.push_back({EventKind::explosion, frame(), world_.time(), item.name, item.position, static_cast<int>(pushed.size())});
 }
 
 void LevelRun::toggle(int item) {
     const ItemDesc& desc = items_[static_cast<std::size_t>(item)];
     if (desc.kind == ItemKind::switchItem)
-        if (const int rope = scene_.findRope(desc.triggers); rope >= 0) return world_.cutRope(rope);
+        if (const int rope = scene_.findRope(desc.triggers); rope >= 0) return world_.cutRope(world_.ropeId(rope));
     const int target = desc.kind == ItemKind::switchItem ? find(desc.triggers) : item;
     if (target < 0) return;
     const ItemKind kind = items_[static_cast<std::size_t>(target)].kind;
@@ -186,7 +186,7 @@ void LevelRun::toggle(int item) {
 }
 
 void LevelRun::cutRope(std::string_view name) {
-    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(rope);
+    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(world_.ropeId(rope));
 }
 
 void LevelRun::markHit(int item, Vec2 point) {
@@ -211,7 +211,8 @@ void LevelRun::markHit(int item, Vec2 point) {
 void LevelRun::step() {
     const double dt = world_.def().timeStep;
     for (std::size_t i = 0; i < world_.circles().size(); ++i)
-        if (isBalloon(static_cast<int>(i))) world_.circles()[i].velocity -= world_.def().gravity * (kBalloonLift * dt);
+        if (isBalloon(static_cast<int>(i)))
+            world_.setVelocity(world_.circleId(static_cast<int>(i)), world_.circles()[i].velocity - world_.def().gravity * (kBalloonLift * dt));
     world_.step();
     for (const Impact& impact : world_.lastImpacts()) {
         // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact

@@ -72,14 +72,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         body.velocity = {bytes.in(-50.0, 50.0), bytes.in(-50.0, 50.0)};
         body.angularVelocity = body.fixedRotation ? 0.0 : bytes.in(-50.0, 50.0);
         body.material = {bytes.in(0.0, 1.0), bytes.in(0.0, 1.0)};
-        const int index = world.addBody(body);
+        const BodyId index = world.addBody(body);
         if (turning && bytes.byte() % 3 == 0)
             world.addPivot({index, {bytes.in(-0.5, 0.5), 0.0}, body.position + Vec2{bytes.in(-0.5, 0.5), bytes.in(-0.5, 0.5)}});
     }
     const int circles = static_cast<int>(world.circles().size());
     for (int i = 0, ropes = bytes.byte() % 3; i < ropes && circles > 0; ++i) {
         RopeDef rope;
-        rope.circle = bytes.byte() % circles;
+        rope.circle = world.circleId(bytes.byte() % circles);
         rope.anchor = {bytes.in(-4.5, 4.5), bytes.in(-4.5, 4.5)};
         rope.length = bytes.in(0.1, 5.0);
         world.addRope(rope);
@@ -88,7 +88,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (fields & 1) world.fields().waters.push_back({{-5.0, -5.0}, {5.0, bytes.in(-5.0, 5.0)}, bytes.in(1.0, 5000.0), bytes.in(0.0, 5000.0)});
     if (fields & 2) world.fields().winds.push_back({{bytes.in(-5.0, 5.0), -5.0}, {0.0, 1.0}, 10.0, bytes.in(0.5, 5.0), bytes.in(0.0, 50.0), bytes.in(0.0, 50.0), true});
     if (fields & 4) world.fields().magnets.push_back({{bytes.in(-4.0, 4.0), bytes.in(-4.0, 4.0)}, bytes.in(0.0, 500.0), 0.1, 1e9, true});
-    if ((fields & 8) && circles > 0) world.fields().thrusters.push_back({bytes.byte() % circles, {bytes.in(-500.0, 500.0), bytes.in(-500.0, 500.0)}, 0.0, 0.5});
+    if ((fields & 8) && circles > 0) world.fields().thrusters.push_back({world.circleId(bytes.byte() % circles), {bytes.in(-500.0, 500.0), bytes.in(-500.0, 500.0)}, 0.0, 0.5});
     if (fields & 16) {
         KinematicPath path;
         path.loop = true;

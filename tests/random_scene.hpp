@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rube::test {
@@ -66,8 +67,9 @@ inline Vec2 randomVelocity(SceneRng& rng, double maxSpeed) {
     return {speed * std::cos(angle), speed * std::sin(angle)};
 }
 
-/// The scene of `seed`; the method is set afterwards by the caller.
-inline RandomScene makeRandomScene(std::uint64_t seed) {
+/// The scene of `seed`; the method is set afterwards by the caller. `afterWalls`, when given, adds
+/// to the world after the box's walls and before anything else (the removal tests' far bodies).
+inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(World&, Vec2 size)>& afterWalls = {}) {
     SceneRng rng(seed * 0x2545f4914f6cdd1dULL + 1);
     WorldDef def;
     const double steps[] = {1.0 / 240, 1.0 / 120, 1.0 / 60, 1.0 / 30, 0.05};
@@ -99,6 +101,7 @@ inline RandomScene makeRandomScene(std::uint64_t seed) {
     addWall({0.0, 0.0}, {0.0, height});
     addWall({width, 0.0}, {width, height});
     if (rng.chance(0.5)) addWall({0.0, height}, {width, height});
+    if (afterWalls) afterWalls(world, {width, height});
 
     std::vector<CircleId> dynamicCircles;
     std::vector<int> cells(static_cast<std::size_t>(columns * rows));

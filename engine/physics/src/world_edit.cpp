@@ -173,6 +173,7 @@ void World::remove(CircleId id) {
     }
     if (tables_->circles.entry(id.index).enabled) leaveCircle(id.index);
     tables_->circles.retire(id.index);
+    syncJoints(); // the other ropes' slots moved
 }
 
 void World::remove(SegmentId id) {
@@ -197,6 +198,7 @@ void World::remove(BodyId id) {
     }
     if (tables_->bodies.entry(id.index).enabled) leaveBody(id.index);
     tables_->bodies.retire(id.index);
+    syncJoints(); // the other pivots' slots moved
 }
 
 void World::remove(RopeId id) {

@@ -8,6 +8,8 @@
 #include "step_method.hpp"
 #include "world_handles.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -33,6 +35,14 @@ void insertSlot(std::vector<T>& items, int slot, const T& item) {
     items.insert(items.begin() + slot, item);
 }
 
+// Per new slot: true when some old slot moved there (false: it just entered).
+std::vector<std::uint8_t> filled(const SlotMap& map) {
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(map.size), 0);
+    for (const int to : map.to)
+        if (to >= 0) out[static_cast<std::size_t>(to)] = 1;
+    return out;
+}
+
 template <class Id>
 Id idOfSlot(const HandleTable& table, int slot) {
     if (slot < 0 || slot >= table.slotCount()) throw std::out_of_range("no such slot");
@@ -42,6 +52,18 @@ Id idOfSlot(const HandleTable& table, int slot) {
 
 } // namespace
 
+// Wakes the islands of sleepers touching segment `s` (within a centimetre): what rested on it falls.
+void World::wakeNear(const Segment& s) {
+    const Vec2 ab = s.b - s.a;
+    const double l2 = ab.lengthSquared();
+    for (const Circle& c : circles_) {
+        if (!c.sleep.asleep) continue;
+        // The closest point by scalar projection, clamped to the segment (lecture 5).
+        const double t = l2 > 0.0 ? std::clamp((c.position - s.a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+        if (c.position.distance(s.a + ab * t) <= c.radius + s.radius + 0.01) wakeCircle(c);
+    }
+}
+
 // ---- where slots went ----
 
 void World::remapSlots(const SlotRemap& remap) {
@@ -50,15 +72,16 @@ void World::remapSlots(const SlotRemap& remap) {
     // Finite poses: a body that (re)entered is finite where it stands (the next check records it).
     if (finite_->circlePositions.size() == remap.circles.to.size()) {
         remapParallel(finite_->circlePositions, remap.circles, Vec2{});
+        const std::vector<std::uint8_t> kept = filled(remap.circles);
         for (std::size_t s = 0; s < circles_.size(); ++s)
-            if (std::find(remap.circles.to.begin(), remap.circles.to.end(), static_cast<int>(s)) == remap.circles.to.end())
-                finite_->circlePositions[s] = circles_[s].position;
+            if (!kept[s]) finite_->circlePositions[s] = circles_[s].position;
     }
     if (finite_->bodyPositions.size() == remap.bodies.to.size()) {
         remapParallel(finite_->bodyPositions, remap.bodies, Vec2{});
         remapParallel(finite_->bodyAngles, remap.bodies, 0.0);
+        const std::vector<std::uint8_t> kept = filled(remap.bodies);
         for (std::size_t s = 0; s < bodies_.size(); ++s)
-            if (std::find(remap.bodies.to.begin(), remap.bodies.to.end(), static_cast<int>(s)) == remap.bodies.to.end()) {
+            if (!kept[s]) {
                 finite_->bodyPositions[s] = bodies_[s].position;
                 finite_->bodyAngles[s] = bodies_[s].angle;
             }
@@ -181,9 +204,8 @@ void World::remove(SegmentId id) {
     if (entry.enabled) {
         const int slot = entry.slot;
         SlotRemap remap{identity(static_cast<int>(circles_.size())), tables_->segments.leave(id.index), identity(static_cast<int>(bodies_.size()))};
+        wakeNear(segments_[static_cast<std::size_t>(slot)]); // what rested on it falls
         eraseSlot(segments_, slot);
-        // What rested on it falls.
-        for (Circle& c : circles_) wakeCircle(c);
         remapSlots(remap);
     }
     tables_->segments.retire(id.index);
@@ -248,8 +270,8 @@ void World::setEnabled(SegmentId id, bool enabled) {
         const int slot = entry.slot;
         perEntry(tables_->parkedSegments, id.index) = segments_[static_cast<std::size_t>(slot)];
         remap.segments = table.leave(id.index);
+        wakeNear(segments_[static_cast<std::size_t>(slot)]); // what rested on it falls
         eraseSlot(segments_, slot);
-        for (Circle& c : circles_) wakeCircle(c); // what rested on it falls
     } else {
         remap.segments = table.enter(id.index);
         insertSlot(segments_, table.entry(id.index).slot, tables_->parkedSegments[static_cast<std::size_t>(id.index)]);

@@ -254,6 +254,7 @@ private:
     Circle& circleState(CircleId id);
     RigidBody& bodyState(BodyId id);
     void wakeCircle(const Circle& c);
+    void wakeNear(const Segment& s);
     void remapSlots(const SlotRemap& remap);
     void leaveCircle(int entry);
     void leaveBody(int entry);

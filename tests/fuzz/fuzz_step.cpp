@@ -1,7 +1,8 @@
 // libFuzzer target: a step of a random scene. The bytes choose a method (all five) and up to eight
 // balls (position, radius, mass, velocity up to 200 m/s, bounciness, friction, spin), up to three
 // segments inside a closed box, up to three rigid bodies (blocks; turning boxes, capsules and pivots
-// under solver and auto), ropes, water, a fan, a magnet, a thruster and a kinematic circle; the world then steps 60 times. It must never produce a NaN or an
+// under solver and auto), ropes, water, a fan, a magnet, a thruster and a kinematic circle; the world then steps 60 times, a circle or
+// segment removed and a rigid body disabled at step 20 (enabled again at 40) when the bytes say so. It must never produce a NaN or an
 // infinity, and never do more work in a step than the event cap allows.
 #include "rube/physics/world.hpp"
 
@@ -100,7 +101,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         mover.path = world.addPath(std::move(path));
         world.addCircle(mover);
     }
+    // Edits between steps: remove a circle (and its ropes), a segment; disable a rigid body, enable it again.
+    const std::uint8_t edits = bytes.byte(), which = bytes.byte();
+    BodyId disabled;
     for (int step = 0; step < 60; ++step) {
+        if (step == 20) {
+            if ((edits & 1) && !world.circles().empty()) world.remove(world.circleId(which % static_cast<int>(world.circles().size())));
+            if ((edits & 2) && !world.segments().empty()) world.remove(world.segmentId(which % static_cast<int>(world.segments().size())));
+            if ((edits & 4) && !world.bodies().empty()) {
+                disabled = world.bodyId(which % static_cast<int>(world.bodies().size()));
+                world.setEnabled(disabled, false);
+            }
+        }
+        if (step == 40 && !disabled.isNull()) world.setEnabled(disabled, true);
         world.step();
         if (world.stats().nonFinite) __builtin_trap();
         if (world.stats().maxEventsInStep > def.maxEventsPerStep) __builtin_trap();

@@ -315,3 +315,22 @@ TEST_CASE("handles: a lone ball's flight under gravity scale s is x0 + v0 t + s 
         }
     }
 }
+
+TEST_CASE("handles: an impact leads to its circle's handle and user value, also after a removal renumbers the slots", "[handles]") {
+    World world;
+    world.addSegment(line({-5.0, 0.0}, {5.0, 0.0}));
+    const CircleId gone = world.addCircle(ball({-2.0, 0.5}, {0.0, -5.0}, 0.5)); // both land in the first step
+    CircleDef def = ball({2.0, 0.6}, {0.0, -6.0}, 0.5);
+    def.userValue = 99;
+    const CircleId kept = world.addCircle(def);
+    for (int i = 0; i < 60 && world.lastImpacts().size() < 2; ++i) world.step();
+    REQUIRE(world.lastImpacts().size() == 2);
+    world.remove(gone);
+    // The removed circle's impact is dropped; the other's names its new slot.
+    REQUIRE(world.lastImpacts().size() == 1);
+    const Impact& impact = world.lastImpacts()[0];
+    CHECK(impact.circle == 0);
+    CHECK(world.circleId(impact.circle) == kept);
+    CHECK(world.userValue(world.circleId(impact.circle)) == 99);
+    CHECK(world.segmentId(impact.other) == world.segmentId(0));
+}

@@ -191,6 +191,7 @@ TEST_CASE("handles: a disabled ball neither moves nor is met, and goes on as it 
         CHECK(world.circle(drifting).position == held.position);
         CHECK(world.circle(drifting).velocity == held.velocity);
         CHECK(world.circle(crossing).velocity == Vec2{0.0, -3.0});
+        const std::int64_t escapes = world.stats().escapes;
         world.setEnabled(drifting, true);
         CHECK(world.slot(drifting) == 0); // back in its place in insertion order
         for (int i = 0; i < 60; ++i) {
@@ -199,7 +200,19 @@ TEST_CASE("handles: a disabled ball neither moves nor is met, and goes on as it 
         }
         CHECK(world.circle(drifting).position == alone.circles()[0].position);
         CHECK(world.circle(drifting).velocity == alone.circles()[0].velocity);
+        CHECK(world.stats().escapes == escapes); // nothing left the bounds
     }
+    // An escaped ball disabled and enabled again is not counted twice.
+    WorldDef def;
+    def.bounds = Aabb{{-1.0, -1.0}, {1.0, 1.0}};
+    World world(def);
+    const CircleId leaving = world.addCircle(ball({0.0, 0.0}, {30.0, 0.0}, 0.1));
+    for (int i = 0; i < 10; ++i) world.step();
+    REQUIRE(world.stats().escapes == 1);
+    world.setEnabled(leaving, false);
+    world.setEnabled(leaving, true);
+    world.step();
+    CHECK(world.stats().escapes == 1);
 }
 
 TEST_CASE("handles: stale handles are detected after remove and re-add into the same entry and slot", "[handles]") {

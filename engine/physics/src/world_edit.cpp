@@ -124,6 +124,7 @@ void World::leaveCircle(int entry) {
     // Whatever slept on it wakes: it may have been resting on this one.
     wakeCircle(c);
     perEntry(tables_->parkedCircles, entry) = circles_[static_cast<std::size_t>(slot)];
+    perEntry(tables_->circleEscaped, entry) = escaped_[static_cast<std::size_t>(slot)];
     SlotRemap remap{table.leave(entry), identity(static_cast<int>(segments_.size())), identity(static_cast<int>(bodies_.size()))};
     eraseSlot(circles_, slot);
     remapSlots(remap);
@@ -133,6 +134,7 @@ void World::leaveBody(int entry) {
     HandleTable& table = tables_->bodies;
     const int slot = table.entry(entry).slot;
     perEntry(tables_->parkedBodies, entry) = bodies_[static_cast<std::size_t>(slot)];
+    perEntry(tables_->bodyEscaped, entry) = escapedBodies_[static_cast<std::size_t>(slot)];
     SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())), table.leave(entry)};
     eraseSlot(bodies_, slot);
     remapSlots(remap);
@@ -257,6 +259,7 @@ void World::setEnabled(CircleId id, bool enabled) {
         c.sleep = SleepState{}; // back awake: its island is gone
         insertSlot(circles_, table.entry(id.index).slot, c);
         remapSlots(remap);
+        escaped_[static_cast<std::size_t>(table.entry(id.index).slot)] = tables_->circleEscaped[static_cast<std::size_t>(id.index)];
     }
     syncJoints();
 }
@@ -289,6 +292,7 @@ void World::setEnabled(BodyId id, bool enabled) {
         SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())), table.enter(id.index)};
         insertSlot(bodies_, table.entry(id.index).slot, tables_->parkedBodies[static_cast<std::size_t>(id.index)]);
         remapSlots(remap);
+        escapedBodies_[static_cast<std::size_t>(table.entry(id.index).slot)] = tables_->bodyEscaped[static_cast<std::size_t>(id.index)];
     }
     syncJoints();
 }

@@ -99,6 +99,7 @@ struct WorldTables {
     std::vector<Rope> parkedRopes;         ///< per rope entry: the rope while it does not act
     std::vector<Pivot> parkedPivots;       ///< per pivot entry, likewise
     std::vector<std::uint8_t> ropeOn, pivotOn; ///< per entry: its own switch (setEnabled)
+    std::vector<std::uint8_t> circleEscaped, bodyEscaped; ///< per entry: escaped before it was disabled (counted once)
     std::vector<int> thrusterSlots;        ///< per thruster: its circle's slot this step, -1 none
 };
 

@@ -30,7 +30,7 @@ int addCapScene(World& world, double speed) {
     world.addSegment(line({-3, 0}, {0, 0}, 0.05));
     world.addSegment(line({-10, -2}, {10, -2}));
     const double r = 0.1, t = 0.05; // it reaches the cap after about t
-    return world.addCircle(ball({r + 0.05 + speed * t, 0.08 + 0.5 * 9.81 * t * t}, {-speed, 0.0}, r));
+    return world.slot(world.addCircle(ball({r + 0.05 + speed * t, 0.08 + 0.5 * 9.81 * t * t}, {-speed, 0.0}, r)));
 }
 
 // `columns` x `rows` balls with friction in a box with friction, all 2 m wide; `touching`: packed
@@ -111,7 +111,7 @@ TEST_CASE("auto per island: a turning plank on a pivot far away leaves a bouncin
         plank.position = {kPileX, 1.0};
         plank.halfExtents = {1.5, 0.05};
         plank.mass = 2.0;
-        const int body = shared.addBody(plank);
+        const BodyId body = shared.addBody(plank);
         shared.addPivot(PivotDef{body, {-0.5, 0.0}, {kPileX - 0.5, 1.0}}); // off centre: it swings
         for (int step = 0; step < 240; ++step) {
             alone.step();
@@ -131,7 +131,7 @@ TEST_CASE("auto per island: a ball thrown into a friction pile joins it and neit
         INFO("speed " << speed << " m/s");
         World world(defWith(Method::automatic));
         addFrictionPile(world, 6, 3, true);
-        const int thrown = world.addCircle(ball({kPileX - 0.5, 3.0}, Vec2{0.2, -1.0}.normalized() * speed, 0.1));
+        const int thrown = world.slot(world.addCircle(ball({kPileX - 0.5, 3.0}, Vec2{0.2, -1.0}.normalized() * speed, 0.1)));
         for (int step = 0; step < 180; ++step) {
             world.step();
             const Circle& c = world.circles()[static_cast<std::size_t>(thrown)];
@@ -146,9 +146,9 @@ TEST_CASE("auto per island: a ball thrown into a friction pile joins it and neit
 TEST_CASE("auto per island: a roped pendulum pair and a ball on a moving platform beside a friction pile move as alone under exact", "[auto][island]") {
     const auto addScene = [](World& world) {
         // A double pendulum: a ball on a rope from a fixed anchor, a second ball on a rope from it.
-        const int upper = world.addCircle(ball({-4.0, 3.0}, {}, 0.1));
-        const int lower = world.addCircle(ball({-3.0, 3.0}, {}, 0.1));
-        world.addRope(RopeDef{upper, -1, {-5.0, 3.0}, 1.0});
+        const CircleId upper = world.addCircle(ball({-4.0, 3.0}, {}, 0.1));
+        const CircleId lower = world.addCircle(ball({-3.0, 3.0}, {}, 0.1));
+        world.addRope(RopeDef{upper, {}, {-5.0, 3.0}, 1.0});
         world.addRope(RopeDef{lower, upper, {}, 1.0});
         // A lift rising 1 m in 2 s and coming back, with a ball dropped on it.
         const int path = world.addPath(KinematicPath{{PathKey{0.0, {0.0, 0.0}}, PathKey{2.0, {0.0, 1.0}}, PathKey{4.0, {0.0, 0.0}}}, true});

@@ -156,7 +156,7 @@ TEST_CASE("auto: no tunnelling of a 0.05 m ball at 5 to 5000 m/s, through a line
         World crowded(defWith(Method::automatic));
         addPile(crowded, 8, 20);
         crowded.addSegment(line({3, -1e5}, {3, 1e5}));
-        const int bullet = crowded.addCircle(ball({2, 5}, Vec2::fromAngle(0.35) * speed, 0.05));
+        const int bullet = crowded.slot(crowded.addCircle(ball({2, 5}, Vec2::fromAngle(0.35) * speed, 0.05)));
         for (int step = 0; step < 30; ++step) {
             crowded.step();
             REQUIRE(crowded.circles()[static_cast<std::size_t>(bullet)].position.x <= 2.95 + 1e-6);

@@ -157,7 +157,7 @@ TEST_CASE("a Newton's cradle passes the momentum to the last ball", "[exact][acc
 
 TEST_CASE("a resting ball never sinks into the floor", "[exact]") {
     World world = bounceScene();
-    world.circles()[0].position = {0, 0.5};
+    world.setPosition(world.circleId(0), {0, 0.5});
     for (int step = 0; step < 600; ++step) {
         world.step();
         REQUIRE(world.circles()[0].position.y == Approx(0.5).margin(1e-12));
@@ -171,7 +171,7 @@ TEST_CASE("a ball dropped on a resting ball: the impact goes through it to the f
     // impact to the floor and back up, and B returns to where it started. A resting pair is left
     // out of the search only until a real impact drives one of its bodies into it again.
     World world = bounceScene();
-    world.circles()[0].position = {0, 0.5};
+    world.setPosition(world.circleId(0), {0, 0.5});
     world.addCircle(ball({0, 3}, {0, 0}, 0.5));
     for (int step = 0; step < 240; ++step) {
         world.step();

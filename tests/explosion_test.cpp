@@ -121,7 +121,7 @@ TEST_CASE("explosion: a body at the very centre is pushed up, and a world works 
     ball.position = e.centre + Vec2{0, 6};
     world.addCircle(ball);
     world.addSegment(SegmentDef{}); // segments never move
-    CHECK(applyExplosion(world, e) == std::vector<int>{0});
+    CHECK(applyExplosion(world, e) == std::vector<CircleId>{world.circleId(0)});
     CHECK(approxEqual(world.circles()[0].velocity, {-5.0, 0}, 1e-15));
     CHECK(world.circles()[1].velocity == Vec2{});
     CHECK(world.segments()[0].a == Vec2{});

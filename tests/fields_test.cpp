@@ -28,7 +28,7 @@ int addBall(World& world, double mass, double radius = 0.5, Vec2 velocity = {}, 
     ball.radius = radius;
     ball.velocity = velocity;
     ball.magnetic = magnetic;
-    return world.addCircle(ball);
+    return world.slot(world.addCircle(ball));
 }
 
 constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver, Method::automatic};
@@ -89,7 +89,7 @@ TEST_CASE("fields: drag weighs a heavy ball less than a light one of the same si
     World world = openWorld(Method::exact, {0.0, -9.81}, AirDrag{0.5, 0.2});
     const int light = addBall(world, 0.2, 0.3);
     const int heavy = addBall(world, 5.0, 0.3);
-    world.circles()[1].position.x = 5.0;
+    world.setPosition(world.circleId(1), {5.0, world.circles()[1].position.y});
     for (int i = 0; i < 120; ++i) world.step();
     CHECK(world.circles()[heavy].velocity.y < world.circles()[light].velocity.y);
 }
@@ -133,8 +133,8 @@ TEST_CASE("fields: a magnet pulls steel with strength / d^2 and leaves other bal
     World world = openWorld(Method::exact, {0.0, 0.0});
     const int steel = addBall(world, 4.0, 0.2, {}, true);
     const int rubber = addBall(world, 4.0, 0.2, {}, false);
-    world.circles()[steel].position = {2.0, 0.0};
-    world.circles()[rubber].position = {0.0, 2.0};
+    world.setPosition(world.circleId(steel), {2.0, 0.0});
+    world.setPosition(world.circleId(rubber), {0.0, 2.0});
     world.fields().magnets.push_back(Magnet{{0.0, 0.0}, 2.0, 0.2});
     world.step();
     // One step's kick: Delta v = F dt / m = (2 / 2^2) (1/60) / 4.
@@ -146,7 +146,7 @@ TEST_CASE("fields: a thruster gives F t / m over the time it burns, even mid-ste
     World world = openWorld(Method::exact, {0.0, 0.0});
     const int rocket = addBall(world, 2.0);
     // Lights a third of the way into step 6 and burns 1.5 s: Delta v = 10 N * 1.5 s / 2 kg = 7.5 m/s.
-    world.fields().thrusters.push_back(Thruster{rocket, {10.0, 0.0}, 6.33 / 60.0, 6.33 / 60.0 + 1.5});
+    world.fields().thrusters.push_back(Thruster{world.circleId(rocket), {10.0, 0.0}, 6.33 / 60.0, 6.33 / 60.0 + 1.5});
     for (int i = 0; i < 180; ++i) world.step();
     CHECK(world.circles()[rocket].velocity.x == Approx(7.5).epsilon(1e-12));
 }
@@ -157,7 +157,7 @@ TEST_CASE("fields: a thruster moves a body x = F t^2 / (2m) exactly, and coasts 
     const double force = 10.0, m = 2.0, a = force / m, burn = 1.2345;
     World world = openWorld(Method::exact, {0.0, 0.0});
     const int rocket = addBall(world, m);
-    world.fields().thrusters.push_back(Thruster{rocket, {force, 0.0}, 0.0, burn});
+    world.fields().thrusters.push_back(Thruster{world.circleId(rocket), {force, 0.0}, 0.0, burn});
     double worstBurning = 0.0, worstCoasting = 0.0;
     for (int i = 0; i < 240; ++i) {
         world.step();
@@ -226,7 +226,7 @@ TEST_CASE("fields: a ball of half the water's density floats with its centre at 
         World world = openWorld(method);
         world.fields().waters.push_back(Water{{-10.0, -10.0}, {10.0, 0.0}, rho});
         const int ball = addBall(world, 0.5 * rho * pi * r * r, r);
-        world.circles()[ball].position = {0.0, 1.5};
+        world.setPosition(world.circleId(ball), {0.0, 1.5});
         for (int i = 0; i < 60 * 29; ++i) world.step();
         const double before = world.circles()[ball].position.y;
         for (int i = 0; i < 60; ++i) world.step();

@@ -38,7 +38,7 @@ int addDisc(World& world, Vec2 position, Vec2 velocity, double omega, double fri
     disc.radius = r;
     disc.mass = m;
     disc.material = {0.0, friction};
-    return world.addCircle(disc);
+    return world.slot(world.addCircle(disc));
 }
 
 void run(World& world, double seconds) {

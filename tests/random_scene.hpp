@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace rube::test {
@@ -66,8 +67,9 @@ inline Vec2 randomVelocity(SceneRng& rng, double maxSpeed) {
     return {speed * std::cos(angle), speed * std::sin(angle)};
 }
 
-/// The scene of `seed`; the method is set afterwards by the caller.
-inline RandomScene makeRandomScene(std::uint64_t seed) {
+/// The scene of `seed`; the method is set afterwards by the caller. `afterWalls`, when given, adds
+/// to the world after the box's walls and before anything else (the removal tests' far bodies).
+inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(World&, Vec2 size)>& afterWalls = {}) {
     SceneRng rng(seed * 0x2545f4914f6cdd1dULL + 1);
     WorldDef def;
     const double steps[] = {1.0 / 240, 1.0 / 120, 1.0 / 60, 1.0 / 30, 0.05};
@@ -99,8 +101,9 @@ inline RandomScene makeRandomScene(std::uint64_t seed) {
     addWall({0.0, 0.0}, {0.0, height});
     addWall({width, 0.0}, {width, height});
     if (rng.chance(0.5)) addWall({0.0, height}, {width, height});
+    if (afterWalls) afterWalls(world, {width, height});
 
-    std::vector<int> dynamicCircles;
+    std::vector<CircleId> dynamicCircles;
     std::vector<int> cells(static_cast<std::size_t>(columns * rows));
     for (int i = 0; i < columns * rows; ++i) cells[static_cast<std::size_t>(i)] = i;
     for (int i = columns * rows - 1; i > 0; --i) std::swap(cells[static_cast<std::size_t>(i)], cells[static_cast<std::size_t>(rng.below(i + 1))]);
@@ -147,7 +150,7 @@ inline RandomScene makeRandomScene(std::uint64_t seed) {
             d.angularVelocity = d.fixedRotation ? 0.0 : (rng.chance(0.5) ? rng.in(-20.0, 20.0) : 0.0);
             d.material = randomMaterial(rng);
             if (rng.chance(0.1)) d.motion = Motion::fixed;
-            const int body = world.addBody(d);
+            const BodyId body = world.addBody(d);
             if (!d.fixedRotation && rng.chance(0.3)) { // a pivot somewhere on or near the body
                 PivotDef p;
                 p.body = body;
@@ -185,11 +188,11 @@ inline RandomScene makeRandomScene(std::uint64_t seed) {
     for (int r = 0; r < ropeCount; ++r) {
         RopeDef d;
         d.circle = dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
-        const Vec2 p = world.circles()[static_cast<std::size_t>(d.circle)].position;
-        const int other = dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
+        const Vec2 p = world.circle(d.circle).position;
+        const CircleId other = dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
         if (other != d.circle && rng.chance(0.5)) {
             d.other = other;
-            d.length = (world.circles()[static_cast<std::size_t>(other)].position - p).length() * rng.in(1.0, 1.5);
+            d.length = (world.circle(other).position - p).length() * rng.in(1.0, 1.5);
         } else {
             d.anchor = p + Vec2{rng.in(-1.0, 1.0), rng.in(0.0, 2.0)};
             d.length = std::max(0.01, (d.anchor - p).length() * rng.in(1.0, 1.5));

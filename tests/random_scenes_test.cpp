@@ -77,7 +77,7 @@ void runScene(std::uint64_t seed, Method method, Tally& tally) {
     }
     const StepStats& stats = world.stats();
     INFO("seed " << seed << " method " << methodName(method) << ": " << stats.isolatedBodies << " bodies isolated, the first "
-                 << (stats.firstIsolatedKind == Other::body ? "rigid body " : "circle ") << stats.firstIsolated);
+                 << (stats.firstIsolatedKind == Other::body ? "rigid body " : "circle ") << stats.firstIsolatedSlot);
     CHECK_FALSE(stats.nonFinite);
     // Every body outside the bounds now was counted as an escape (each once, so never fewer).
     std::int64_t outside = 0;

@@ -190,7 +190,7 @@ TEST_CASE("a seesaw with equal moments m1 d1 = m2 d2 stays balanced, unequal one
     const auto seesaw = [](double d2) {
         World world = solverWorld();
         const Vec2 pivot{0.0, 1.0};
-        const int plank = world.addBody(box(pivot, 4.0, 0.1, 2.0));
+        const BodyId plank = world.addBody(box(pivot, 4.0, 0.1, 2.0));
         world.addPivot({plank, {0.0, 0.0}, pivot});
         world.addBody(box({-0.75, 1.15}, 0.2, 0.2, 2.0)); // m1 d1 = 2 x 0.75
         world.addBody(box({d2, 1.15}, 0.2, 0.2, 1.0));    // m2 d2 = 1 x d2
@@ -209,7 +209,7 @@ TEST_CASE("a ball on one end of a seesaw starts it turning at tau / I (parallel-
     World world = solverWorld();
     const Vec2 pivot{0.0, 1.0};
     const double plankMass = 2.0, length = 4.0, thickness = 0.1, ballMass = 1.0, d = 1.5, r = 0.1;
-    const int plank = world.addBody(box(pivot, length, thickness, plankMass, 0.0, 0.0));
+    const BodyId plank = world.addBody(box(pivot, length, thickness, plankMass, 0.0, 0.0));
     world.addPivot({plank, {0.0, 0.0}, pivot});
     CircleDef ball;
     ball.position = {d, pivot.y + 0.5 * thickness + r};

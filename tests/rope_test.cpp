@@ -28,13 +28,13 @@ World openWorld(Method method, Vec2 gravity = {0.0, -kG}) {
 }
 
 // A pendulum of length L released from rest at `angle` radians from straight down; returns the rope.
-int addPendulum(World& world, double length, double angle, double mass = 1.0) {
+RopeId addPendulum(World& world, double length, double angle, double mass = 1.0) {
     CircleDef ball;
     ball.position = kAnchor + Vec2{std::sin(angle), -std::cos(angle)} * length;
     ball.radius = 0.1;
     ball.mass = mass;
-    const int circle = world.addCircle(ball);
-    return world.addRope(RopeDef{circle, -1, kAnchor, length});
+    const CircleId circle = world.addCircle(ball);
+    return world.addRope(RopeDef{circle, {}, kAnchor, length});
 }
 
 // The mean period over `periods` swings, from the upward zero crossings of x - anchor.x, each
@@ -135,7 +135,7 @@ TEST_CASE("rope: a cut rope lets the ball fall freely", "[rope]") {
     for (const Method method : kMethods) {
         CAPTURE(methodName(method));
         World world = openWorld(method);
-        const int rope = addPendulum(world, length, 0.0);
+        const RopeId rope = addPendulum(world, length, 0.0);
         for (int i = 0; i < 60; ++i) world.step();
         const Vec2 hung = world.circles()[0].position;
         REQUIRE(hung.distance(kAnchor) == Approx(length).epsilon(1e-12));
@@ -180,7 +180,7 @@ TEST_CASE("rope: a slack rope never pushes, it jerks taut and then holds the bal
         CircleDef ball;
         ball.position = kAnchor + Vec2{0.0, -0.2};
         ball.radius = 0.1;
-        world.addRope(RopeDef{world.addCircle(ball), -1, kAnchor, 1.0});
+        world.addRope(RopeDef{world.addCircle(ball), {}, kAnchor, 1.0});
         free.addCircle(ball);
         // 0.8 m of slack takes sqrt(2 x 0.8 / g) = 0.40 s to fall: until then the rope does nothing.
         for (int i = 0; i < 20; ++i) {
@@ -210,7 +210,7 @@ TEST_CASE("rope: two balls on a rope circle each other, keeping momentum, energy
         b.mass = 3.0;
         b.radius = 0.2;
         b.velocity = Vec2{0.0, -1.0} + Vec2{0.5, 0.0};
-        const int ia = world.addCircle(a), ib = world.addCircle(b);
+        const CircleId ia = world.addCircle(a), ib = world.addCircle(b);
         world.addRope(RopeDef{ia, ib, {}, 2.0});
         const auto momentum = [&] { return world.circles()[0].velocity * 1.0 + world.circles()[1].velocity * 3.0; };
         const auto energy = [&] {
@@ -234,11 +234,11 @@ TEST_CASE("rope: two balls on a rope circle each other, keeping momentum, energy
 
 TEST_CASE("rope: a rope to nothing or of no length is refused", "[rope]") {
     World world = openWorld(Method::exact);
-    const int ball = world.addCircle(CircleDef{});
-    CHECK_THROWS_AS(world.addRope(RopeDef{ball + 1, -1, {}, 1.0}), std::invalid_argument);
+    const CircleId ball = world.addCircle(CircleDef{});
+    CHECK_THROWS_AS(world.addRope(RopeDef{CircleId{ball.index + 1, ball.generation}, {}, {}, 1.0}), std::invalid_argument);
     CHECK_THROWS_AS(world.addRope(RopeDef{ball, ball, {}, 1.0}), std::invalid_argument);
-    CHECK_THROWS_AS(world.addRope(RopeDef{ball, -1, {}, 0.0}), std::invalid_argument);
-    CHECK_THROWS_AS(world.cutRope(0), std::out_of_range);
+    CHECK_THROWS_AS(world.addRope(RopeDef{ball, {}, {}, 0.0}), std::invalid_argument);
+    CHECK_THROWS_AS(world.cutRope(RopeId{}), std::invalid_argument);
 }
 
 TEST_CASE("rope: a double pendulum's ropes never stretch, though either may go slack", "[rope]") {
@@ -253,8 +253,8 @@ TEST_CASE("rope: a double pendulum's ropes never stretch, though either may go s
         upper.radius = 0.2;
         lower.position = {8.0, 3.5};
         lower.radius = 0.2;
-        const int iu = world.addCircle(upper), il = world.addCircle(lower);
-        world.addRope(RopeDef{iu, -1, {6.5, 5.0}, 1.5});
+        const CircleId iu = world.addCircle(upper), il = world.addCircle(lower);
+        world.addRope(RopeDef{iu, {}, {6.5, 5.0}, 1.5});
         world.addRope(RopeDef{il, iu, {}, 1.5});
         double stretch = 0.0;
         for (int i = 0; i < 60 * 12; ++i) {

@@ -17,10 +17,10 @@ TEST_CASE("a run with a body gone non-finite has a one-line reason, a finite run
     ball.position = {0.0, 1.0};
     world.addCircle(ball);
     ball.position = {3.0, 1.0};
-    const int bad = world.addCircle(ball);
+    const CircleId bad = world.addCircle(ball);
     for (int i = 0; i < 10; ++i) world.step();
     CHECK(game::unstableStateMessage(world).empty());
-    world.circles()[static_cast<std::size_t>(bad)].velocity.y = std::numeric_limits<double>::quiet_NaN();
+    world.setVelocity(bad, {world.circle(bad).velocity.x, std::numeric_limits<double>::quiet_NaN()});
     world.step();
     const std::string why = game::unstableStateMessage(world);
     CHECK(why == "a body's state became NaN or infinite: 1 body frozen, the first circle 1; the run's results are not physical");

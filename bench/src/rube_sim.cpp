@@ -20,7 +20,7 @@ public:
         def.radius = s.radius;
         def.mass = s.mass;
         def.material = {s.bounciness, s.friction};
-        return world_.addCircle(def);
+        return world_.slot(world_.addCircle(def));
     }
 
     void addLine(const LineSpec& s) override {

@@ -31,13 +31,13 @@ void LevelRun::addItem(const ItemDesc& item) {
     state.aim = item.angle;
     const ItemBodies bodies = itemBodies(item);
     for (const CircleDef& c : bodies.circles) {
-        const int index = world_.addCircle(c);
+        const int index = world_.slot(world_.addCircle(c));
         if (state.firstCircle < 0) state.firstCircle = index;
         circleItem_.push_back(static_cast<int>(items_.size()));
         projectile_.push_back(0);
     }
     for (const SegmentDef& s : bodies.segments) {
-        const int index = world_.addSegment(s);
+        const int index = world_.slot(world_.addSegment(s));
         if (state.firstSegment < 0) state.firstSegment = index;
     }
     Fields& fields = world_.fields();
@@ -52,7 +52,7 @@ void LevelRun::addItem(const ItemDesc& item) {
     if (bodies.thruster) {
         state.field = static_cast<int>(fields.thrusters.size());
         fields.thrusters.push_back(*bodies.thruster);
-        fields.thrusters.back().circle = state.firstCircle;
+        fields.thrusters.back().circle = state.firstCircle >= 0 ? world_.circleId(state.firstCircle) : CircleId{};
     }
     items_.push_back(item);
     states_.push_back(state);
@@ -144,7 +144,7 @@ void LevelRun::detonate(int bomb) { toggle(bomb); }
 void LevelRun::toggle(int item) { items_[static_cast<std::size_t>(item)].kind->trigger(*this, item); }
 
 void LevelRun::cutRope(std::string_view name) {
-    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(rope);
+    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(world_.ropeId(rope));
 }
 
 void LevelRun::step() {

@@ -101,7 +101,7 @@ std::string unstableStateMessage(const World& world) {
     std::string text = "a body's state became NaN or infinite";
     if (s.isolatedBodies > 0)
         text += ": " + std::to_string(s.isolatedBodies) + (s.isolatedBodies == 1 ? " body" : " bodies") + " frozen, the first " +
-                (s.firstIsolatedKind == Other::body ? "rigid body " : "circle ") + std::to_string(s.firstIsolated);
+                (s.firstIsolatedKind == Other::body ? "rigid body " : "circle ") + std::to_string(s.firstIsolatedSlot);
     return text + "; the run's results are not physical";
 }
 

@@ -28,11 +28,16 @@ int SceneDesc::findRope(std::string_view name) const {
 World buildWorld(const SceneDesc& scene) {
     World world(scene.world);
     for (const NamedPath& path : scene.paths) world.addPath(path.path);
-    for (const CircleDef& circle : scene.circles) world.addCircle(circle);
+    std::vector<CircleId> circles;
+    for (const CircleDef& circle : scene.circles) circles.push_back(world.addCircle(circle));
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
-    for (const RopeDef& rope : scene.ropes) world.addRope(rope);
-    for (const RigidBodyDef& body : scene.bodies) world.addBody(body);
-    for (const PivotDef& pivot : scene.pivots) world.addPivot(pivot);
+    for (const SceneRope& rope : scene.ropes)
+        world.addRope({circles[static_cast<std::size_t>(rope.circle)],
+                       rope.other >= 0 ? circles[static_cast<std::size_t>(rope.other)] : CircleId{}, rope.anchor, rope.length});
+    std::vector<BodyId> bodies;
+    for (const RigidBodyDef& body : scene.bodies) bodies.push_back(world.addBody(body));
+    for (const ScenePivot& pivot : scene.pivots)
+        world.addPivot({bodies[static_cast<std::size_t>(pivot.body)], pivot.localAnchor, pivot.worldAnchor});
     world.fields().waters = scene.waters;
     return world;
 }

@@ -18,6 +18,21 @@ struct NamedPath {
     KinematicPath path; ///< offsets from where each body following it was placed
 };
 
+/// A [[rope]] as the file names it: circles by their index in SceneDesc::circles.
+struct SceneRope {
+    int circle = -1;     ///< the circle at one end
+    int other = -1;      ///< the circle at the other end, or -1 for `anchor`
+    Vec2 anchor;         ///< the fixed end, m
+    double length = 1.0; ///< m
+};
+
+/// A [[pivot]] as the file names it: the body by its index in SceneDesc::bodies.
+struct ScenePivot {
+    int body = -1;     ///< the rigid body
+    Vec2 localAnchor;  ///< in the body's frame, m
+    Vec2 worldAnchor;  ///< in the world, m
+};
+
 /// Everything a scene file says, validated; the physics definitions are ready to hand to a World.
 /// Circles and segments refer to paths by index into `paths`, which is also the World's index.
 struct SceneDesc {
@@ -32,11 +47,11 @@ struct SceneDesc {
     std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
     std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
     std::vector<Water> waters;      ///< [[water]] pools, in file order
-    std::vector<RopeDef> ropes;     ///< [[rope]] in file order: index i is the World's rope i
+    std::vector<SceneRope> ropes;    ///< [[rope]] in file order: index i is the World's rope i
     std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
     std::vector<RigidBodyDef> bodies; ///< every [[box]], then every [[capsule]]: index i is the World's body i
     std::vector<std::string> bodyNames; ///< the `name` of each box or capsule, "" when unnamed
-    std::vector<PivotDef> pivots;     ///< [[pivot]] in file order
+    std::vector<ScenePivot> pivots;    ///< [[pivot]] in file order
     LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.

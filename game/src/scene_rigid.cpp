@@ -119,7 +119,7 @@ void readPivot(const toml::table& table, SceneReading& reading) {
     // The anchor in the body's own frame: turned back by its angle.
     const Vec2 d = anchor - body.position;
     const double c = std::cos(body.angle), s = std::sin(body.angle);
-    reading.scene.pivots.push_back(PivotDef{static_cast<int>(*index), {c * d.x + s * d.y, -s * d.x + c * d.y}, anchor});
+    reading.scene.pivots.push_back(ScenePivot{static_cast<int>(*index), {c * d.x + s * d.y, -s * d.x + c * d.y}, anchor});
 }
 
 } // namespace

@@ -80,7 +80,7 @@ void readRope(const toml::table& table, SceneReading& reading) {
                                                   formatNumber(ropeLength));
         return;
     }
-    reading.scene.ropes.push_back(RopeDef{*circle, otherIndex, anchorPoint, ropeLength});
+    reading.scene.ropes.push_back(SceneRope{*circle, otherIndex, anchorPoint, ropeLength});
     reading.scene.ropeNames.push_back(name);
 }
 

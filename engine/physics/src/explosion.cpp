@@ -45,8 +45,15 @@ std::vector<int> applyExplosion(std::span<Circle> circles, const Explosion& expl
     return affected;
 }
 
-std::vector<int> applyExplosion(World& world, const Explosion& explosion) {
-    return applyExplosion(world.circles(), explosion);
+std::vector<CircleId> applyExplosion(World& world, const Explosion& explosion) {
+    // The same impulses, through the world's setter so that a sleeping island it reaches wakes.
+    std::vector<Circle> circles(world.circles().begin(), world.circles().end());
+    std::vector<CircleId> affected;
+    for (const int slot : applyExplosion(circles, explosion)) {
+        affected.push_back(world.circleId(slot));
+        world.setVelocity(affected.back(), circles[static_cast<std::size_t>(slot)].velocity);
+    }
+    return affected;
 }
 
 } // namespace rube

@@ -76,8 +76,8 @@ Vec2 magnetForce(const Magnet& magnet, Vec2 position) {
     return d * (magnet.strength / (clamped * clamped * distance));
 }
 
-void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag& airDrag, Vec2 gravity, double time,
-                 double dt) {
+void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots, const AirDrag& airDrag,
+                 Vec2 gravity, double time, double dt) {
     for (Circle& c : circles) {
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double width = 2.0 * c.radius;
@@ -92,7 +92,7 @@ void applyFields(std::span<Circle> circles, const Fields& fields, const AirDrag&
         for (const Water& water : fields.waters) kick += waterKick(c, water, gravity, dt);
         c.velocity += kick;
     }
-    kickThrusters(circles, fields.thrusters, time, dt, BurnShare::beforeMove);
+    kickThrusters(circles, fields.thrusters, thrusterSlots, time, dt, BurnShare::beforeMove);
 }
 
 void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt) {
@@ -105,13 +105,16 @@ void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2
     }
 }
 
-void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, double time, double dt, BurnShare share) {
+void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, std::span<const int> slots, double time,
+                   double dt, BurnShare share) {
     const double t1 = time + dt;
-    for (const Thruster& thruster : thrusters) {
-        if (thruster.circle < 0 || static_cast<std::size_t>(thruster.circle) >= circles.size()) continue;
+    for (std::size_t k = 0; k < thrusters.size() && k < slots.size(); ++k) {
+        const Thruster& thruster = thrusters[k];
+        const int slot = slots[k];
+        if (slot < 0 || static_cast<std::size_t>(slot) >= circles.size()) continue;
         const double burning = overlap(thruster.start, thruster.end, time, t1);
         if (burning <= 0.0) continue;
-        Circle& c = circles[static_cast<std::size_t>(thruster.circle)];
+        Circle& c = circles[static_cast<std::size_t>(slot)];
         // A constant force a = F / m burning over [s, e] within the step moves a body by a tau (t1 - c) and
         // changes its velocity by a tau (tau = e - s, c = (s + e) / 2, lecture 3: impulse = change of
         // momentum). Kicking a tau (t1 - c) / dt before the method moves it at constant velocity and the

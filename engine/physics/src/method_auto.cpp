@@ -31,6 +31,7 @@
 #include "auto_subset.hpp"
 #include "solver_sleep.hpp"
 #include "step_method.hpp"
+#include "world_handles.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -101,6 +102,24 @@ public:
 
     bool integratesRotation() const override { return usedSolver_; }
     bool keepsSleep() const override { return true; }
+    void remapSlots(const SlotRemap& remap) override {
+        exact_->remapSlots(remap);
+        if (solver_) solver_->remapSlots(remap);
+        // Stints follow their nodes (circles, then rigid bodies), unless they were already stale.
+        const std::size_t oldCircles = remap.circles.to.size(), oldNodes = oldCircles + remap.bodies.to.size();
+        if (stintLeft_.size() != oldNodes || circleCount_ != oldCircles) return;
+        SlotMap nodes;
+        nodes.size = remap.circles.size + remap.bodies.size;
+        nodes.to.resize(oldNodes);
+        for (std::size_t n = 0; n < oldNodes; ++n) {
+            const int old = static_cast<int>(n);
+            const int to = n < oldCircles ? remap.circles(old) : remap.bodies(old - static_cast<int>(oldCircles));
+            nodes.to[n] = to < 0 ? -1 : n < oldCircles ? to : remap.circles.size + to;
+        }
+        remapParallel(stintLeft_, nodes, 0);
+        remapParallel(stintLength_, nodes, kFirstStint);
+        circleCount_ = static_cast<std::size_t>(remap.circles.size);
+    }
 
 private:
     // The whole world on exact without an island pass, when nothing in it could need the solver

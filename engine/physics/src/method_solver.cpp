@@ -79,6 +79,10 @@ public:
     }
     bool integratesRotation() const override { return true; }
     bool keepsSleep() const override { return true; }
+    void remapSlots(const SlotRemap& remap) override {
+        cache_.remap(remap);
+        rigid_.remapSlots(remap);
+    }
 
 private:
     void prepareBodies(const StepContext& ctx, double dt);

@@ -23,6 +23,8 @@ public:
     /// Sets up the step: body states, every contact of a rigid body (found once, with speculative
     /// margins for how far things may move in `dt`) and the pivots, all as they stand at the step's start.
     void prepare(const StepContext& ctx, double dt);
+    /// Bodies changed slots between steps: the warm starts follow them (RigidContactCache::remap).
+    void remapSlots(const SlotRemap& remap) { cache_.remap(remap); }
     /// Calls `list(i)` for each circle that meets a rigid body with friction (it must turn this step).
     template <class List>
     void listFrictionCircles(List list) const {

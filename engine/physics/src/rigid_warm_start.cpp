@@ -34,6 +34,29 @@ void RigidContactCache::apply(std::span<RigidContact> contacts) const {
     }
 }
 
+void RigidContactCache::remap(const SlotRemap& remap) {
+    const int oldCircles = static_cast<int>(remap.circles.to.size());
+    std::size_t kept = 0;
+    for (const Entry& e : entries_) {
+        // Side A is a rigid body; side B a rigid body, or a solver body (circles, then segments).
+        const int a = remap.bodies(static_cast<int>(e.pair >> 32));
+        const bool rigid = (e.pair >> 31 & 1u) == 0;
+        const int oldB = static_cast<int>(e.pair & 0x7fffffffu);
+        const int b = rigid ? remap.bodies(oldB)
+                      : oldB < oldCircles ? remap.circles(oldB)
+                                          : (remap.segments(oldB - oldCircles) < 0 ? -1 : remap.circles.size + remap.segments(oldB - oldCircles));
+        if (a < 0 || b < 0) continue;
+        Entry moved = e;
+        moved.pair = static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 |
+                     static_cast<std::uint64_t>(rigid ? 0u : 1u) << 31 | static_cast<std::uint32_t>(b);
+        entries_[kept++] = moved;
+    }
+    entries_.resize(kept);
+    std::sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) {
+        return std::make_tuple(x.pair, x.feature) < std::make_tuple(y.pair, y.feature);
+    });
+}
+
 void RigidContactCache::store(std::span<const RigidContact> contacts) {
     entries_.clear();
     for (const RigidContact& c : contacts) {

@@ -6,6 +6,7 @@
 // of sinking while the impulses build up again. Not part of the public API.
 
 #include "rigid_contacts.hpp"
+#include "world_handles.hpp"
 
 #include <cstdint>
 #include <span>
@@ -20,6 +21,8 @@ public:
     void apply(std::span<RigidContact> contacts) const;
     /// Remembers every point's impulses at the end of the step's substeps (before restitution).
     void store(std::span<const RigidContact> contacts);
+    /// Moves the stored points to their bodies' new slots, dropping those of bodies that left.
+    void remap(const SlotRemap& remap);
 
 private:
     struct Entry {

@@ -72,6 +72,42 @@ void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<
     }
 }
 
+void ContactCache::remap(const SlotRemap& remap) {
+    const int oldCircles = static_cast<int>(remap.circles.to.size()), oldSegments = static_cast<int>(remap.segments.to.size());
+    if (circleCount_ != oldCircles || segmentCount_ != oldSegments) {
+        circleCount_ = segmentCount_ = -1; // already stale: found by nothing
+        return;
+    }
+    const int circles = remap.circles.size;
+    // Each surviving pair under its new numbers (other: a circle, or circles + a segment), then
+    // grouped by circle again as store does.
+    std::vector<std::pair<int, int>> keys;
+    std::vector<PreviousContact> kept;
+    for (int owner = 0; owner < oldCircles; ++owner) {
+        const int a = remap.circles(owner);
+        for (int k = ownerStart_[static_cast<std::size_t>(owner)]; k < ownerStart_[static_cast<std::size_t>(owner) + 1]; ++k) {
+            const int old = other_[static_cast<std::size_t>(k)];
+            const int b = old < oldCircles ? remap.circles(old) : remap.segments(old - oldCircles);
+            if (a < 0 || b < 0) continue;
+            keys.emplace_back(a, old < oldCircles ? b : circles + b);
+            kept.push_back(previous_[static_cast<std::size_t>(k)]);
+        }
+    }
+    circleCount_ = circles;
+    segmentCount_ = remap.segments.size;
+    ownerStart_.assign(static_cast<std::size_t>(circles) + 1, 0);
+    for (const auto& key : keys) ++ownerStart_[static_cast<std::size_t>(key.first) + 1];
+    for (int i = 0; i < circles; ++i) ownerStart_[static_cast<std::size_t>(i) + 1] += ownerStart_[static_cast<std::size_t>(i)];
+    cursor_.assign(ownerStart_.begin(), ownerStart_.end() - 1);
+    other_.resize(keys.size());
+    previous_.resize(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        const int k = cursor_[static_cast<std::size_t>(keys[i].first)]++;
+        other_[static_cast<std::size_t>(k)] = keys[i].second;
+        previous_[static_cast<std::size_t>(k)] = kept[i];
+    }
+}
+
 void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle> circles,
                    std::span<const Segment> segments, std::span<const double> margins,
                    std::span<const double> inverseMass, const ContactCache& cache,

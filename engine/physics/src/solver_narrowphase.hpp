@@ -6,6 +6,7 @@
 #include "broadphase_grid.hpp"
 #include "solver_soft_step.hpp"
 #include "step_method.hpp"
+#include "world_handles.hpp"
 
 #include <span>
 #include <vector>
@@ -29,6 +30,8 @@ public:
     /// Remembers the contacts, grouped by circle (a counting sort) for lookup next step, with their
     /// friction impulses when `tangentImpulses` is parallel to them (empty: a step without friction).
     void store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount, int segmentCount);
+    /// Moves the stored pairs to the bodies' new slots, dropping those of bodies that left.
+    void remap(const SlotRemap& remap);
 
 private:
     std::vector<int> ownerStart_; // per circle: its first stored pair; size circles + 1

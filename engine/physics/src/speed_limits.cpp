@@ -60,7 +60,7 @@ void noteIsolated(StepStats& stats, Other kind, std::size_t index) {
     stats.nonFinite = true;
     if (stats.isolatedBodies++ == 0) {
         stats.firstIsolatedKind = kind;
-        stats.firstIsolated = static_cast<int>(index);
+        stats.firstIsolatedSlot = static_cast<int>(index);
     }
 }
 

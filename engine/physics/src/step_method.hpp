@@ -9,6 +9,8 @@
 
 namespace rube {
 
+struct SlotRemap;
+
 /// What a method may touch during one step. Kinematic bodies already carry this step's velocity;
 /// a method moves them linearly with it (the world snaps them onto their path afterwards).
 struct StepContext {
@@ -36,6 +38,10 @@ public:
     /// True when the method honours asleep circles (and wakes them itself); the world wakes every
     /// circle before a method that does not.
     virtual bool keepsSleep() const { return false; }
+    /// Bodies left or (re)entered the world's arrays between steps: what the method keeps per body
+    /// from step to step (warm starts, stints) follows them to their new slots (world_handles.hpp),
+    /// so a world goes on as if what left had never been there.
+    virtual void remapSlots(const SlotRemap&) {}
 };
 
 std::unique_ptr<StepMethod> makeDiscreteMethod();

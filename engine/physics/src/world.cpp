@@ -7,6 +7,7 @@
 #include "solver_sleep.hpp"
 #include "speed_limits.hpp"
 #include "step_method.hpp"
+#include "world_handles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -55,12 +56,13 @@ std::optional<Method> methodFromName(std::string_view name) {
     return std::nullopt;
 }
 
-World::World(const WorldDef& def) : def_(def), method_(makeMethod(def.method)), finite_(std::make_unique<FiniteSnapshot>()) {}
+World::World(const WorldDef& def)
+    : def_(def), method_(makeMethod(def.method)), tables_(std::make_unique<WorldTables>()), finite_(std::make_unique<FiniteSnapshot>()) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
-int World::addCircle(const CircleDef& d) {
+CircleId World::addCircle(const CircleDef& d) {
     Circle c;
     c.position = d.position;
     c.origin = d.position;
@@ -76,12 +78,15 @@ int World::addCircle(const CircleDef& d) {
         c.angularVelocity = d.angularVelocity;
     }
     if (c.path < 0 && c.motion == Motion::kinematic) c.motion = Motion::fixed;
+    c.gravityScale = d.gravityScale;
+    const int entry = tables_->circles.create(static_cast<int>(circles_.size()));
+    tables_->circles.entry(entry).userValue = d.userValue;
     circles_.push_back(c);
     escaped_.push_back(0);
-    return static_cast<int>(circles_.size()) - 1;
+    return handleOf<CircleId>(tables_->circles, entry);
 }
 
-int World::addSegment(const SegmentDef& d) {
+SegmentId World::addSegment(const SegmentDef& d) {
     Segment s;
     s.a = s.originA = d.a;
     s.b = s.originB = d.b;
@@ -93,11 +98,12 @@ int World::addSegment(const SegmentDef& d) {
     // A paddle starts turned as its path says at t = 0 (a translating path's first offset waits for the first step, as before).
     if (d.path >= 0 && static_cast<std::size_t>(d.path) < paths_.size() && paths_[static_cast<std::size_t>(d.path)].turns())
         placeTurningSegment(s, paths_[static_cast<std::size_t>(d.path)], 0.0);
+    const int entry = tables_->segments.create(static_cast<int>(segments_.size()));
     segments_.push_back(s);
-    return static_cast<int>(segments_.size()) - 1;
+    return handleOf<SegmentId>(tables_->segments, entry);
 }
 
-int World::addBody(const RigidBodyDef& d) {
+BodyId World::addBody(const RigidBodyDef& d) {
     RigidBody b;
     b.shape = d.shape;
     b.position = d.position;
@@ -111,16 +117,22 @@ int World::addBody(const RigidBodyDef& d) {
     b.inverseMass = dynamic ? 1.0 / d.mass : 0.0;
     b.inverseInertia = dynamic && !d.fixedRotation ? 1.0 / momentOfInertia(d.shape, d.halfExtents, d.mass) : 0.0;
     b.angularVelocity = d.motion == Motion::fixed || d.fixedRotation ? 0.0 : d.angularVelocity;
+    b.gravityScale = d.gravityScale;
+    const int entry = tables_->bodies.create(static_cast<int>(bodies_.size()));
+    tables_->bodies.entry(entry).userValue = d.userValue;
     bodies_.push_back(b);
     escapedBodies_.push_back(0);
-    return static_cast<int>(bodies_.size()) - 1;
+    return handleOf<BodyId>(tables_->bodies, entry);
 }
 
-int World::addPivot(const PivotDef& d) {
-    if (d.body < 0 || static_cast<std::size_t>(d.body) >= bodies_.size())
-        throw std::invalid_argument("a pivot must pin an existing rigid body");
-    pivots_.push_back(Pivot{d.body, d.localAnchor, d.worldAnchor});
-    return static_cast<int>(pivots_.size()) - 1;
+PivotId World::addPivot(const PivotDef& d) {
+    if (!isValid(d.body)) throw std::invalid_argument("a pivot must pin an existing rigid body");
+    const int entry = tables_->pivots.create(static_cast<int>(pivots_.size()));
+    perEntry(tables_->pivotOn, entry) = 1;
+    pivots_.push_back(Pivot{slot(d.body), d.body, d.localAnchor, d.worldAnchor});
+    // A disabled body's pivot waits with it.
+    if (!isEnabled(d.body)) syncJoints();
+    return handleOf<PivotId>(tables_->pivots, entry);
 }
 
 int World::addPath(KinematicPath path) {
@@ -128,18 +140,17 @@ int World::addPath(KinematicPath path) {
     return static_cast<int>(paths_.size()) - 1;
 }
 
-int World::addRope(const RopeDef& d) {
-    const auto valid = [&](int index) { return index >= 0 && static_cast<std::size_t>(index) < circles_.size(); };
-    if (!valid(d.circle) || (d.other != -1 && (!valid(d.other) || d.other == d.circle)))
+RopeId World::addRope(const RopeDef& d) {
+    if (!isValid(d.circle) || (!d.other.isNull() && (!isValid(d.other) || d.other == d.circle)))
         throw std::invalid_argument("a rope must join an existing circle to an anchor or to another circle");
     if (!(d.length > 0.0) || !std::isfinite(d.length)) throw std::invalid_argument("a rope's length must be positive");
-    ropes_.push_back(Rope{d.circle, d.other, d.anchor, d.length, false});
-    return static_cast<int>(ropes_.size()) - 1;
-}
-
-void World::cutRope(int index) {
-    if (index < 0 || static_cast<std::size_t>(index) >= ropes_.size()) throw std::out_of_range("no rope with that index");
-    ropes_[static_cast<std::size_t>(index)].cut = true;
+    const int entry = tables_->ropes.create(static_cast<int>(ropes_.size()));
+    perEntry(tables_->ropeOn, entry) = 1;
+    const int other = d.other.isNull() ? -1 : slot(d.other);
+    ropes_.push_back(Rope{slot(d.circle), other, d.circle, d.other, d.anchor, d.length, false});
+    // A rope to a disabled circle waits with it.
+    if (!isEnabled(d.circle) || (!d.other.isNull() && !isEnabled(d.other))) syncJoints();
+    return handleOf<RopeId>(tables_->ropes, entry);
 }
 
 void World::setMethod(Method method) {
@@ -179,15 +190,18 @@ void World::step() {
     impacts_.clear();
     const double dt = def_.timeStep;
     // Model no more than a scene needs: a world without fields never enters the pass.
+    if (!fields_.thrusters.empty()) resolveThrusters();
     if (def_.airDrag.active() || !fields_.empty())
-        applyFields(circles_, fields_, def_.airDrag, def_.gravity, time_, dt);
+        applyFields(circles_, fields_, tables_->thrusterSlots, def_.airDrag, def_.gravity, time_, dt);
+    applyGravityScales(dt);
     // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
     // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
     // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
-    isolateNonFinite(circles_, bodies_, *finite_, stats_, false);
+    const bool noneIsolated = stats_.isolatedBodies == 0;
+    if (isolateNonFinite(circles_, bodies_, *finite_, stats_, false) && noneIsolated) nameFirstIsolated();
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
@@ -201,7 +215,9 @@ void World::step() {
     if (hasRopes) recordRopeStarts(circles_, ropes_, ropeStarts_);
     method_->step(context, dt);
     // The rest of each thruster's impulse, after the move (see kickThrusters): exact for a constant force.
-    if (!fields_.thrusters.empty()) kickThrusters(circles_, fields_.thrusters, time_, dt, BurnShare::afterMove);
+    if (!fields_.thrusters.empty())
+        kickThrusters(circles_, fields_.thrusters, tables_->thrusterSlots, time_, dt, BurnShare::afterMove);
+    applyGravityScales(dt);
     // The rest of linear air drag's step, likewise (see linearDragAfterMove): exact x(t) and v(t) in free flight.
     if (def_.airDrag.linear > 0.0) linearDragAfterMove(circles_, def_.airDrag, def_.gravity, dt);
     if (hasRopes) enforceRopes(circles_, ropes_, ropeStarts_, impacts_, dt);
@@ -220,7 +236,8 @@ void World::step() {
 
 void World::checkState() {
     // A body the step made non-finite is frozen where it last was finite and reported (speed_limits.cpp).
-    isolateNonFinite(circles_, bodies_, *finite_, stats_, true);
+    const bool noneIsolated = stats_.isolatedBodies == 0;
+    if (isolateNonFinite(circles_, bodies_, *finite_, stats_, true) && noneIsolated) nameFirstIsolated();
     for (std::size_t i = 0; i < circles_.size(); ++i) {
         const Circle& c = circles_[i];
         if (!escaped_[i] && !def_.bounds.contains(c.position)) {

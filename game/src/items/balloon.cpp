@@ -18,8 +18,8 @@ public:
     void beforeStep(LevelRun& run, int item) const override {
         const int circle = run.states()[static_cast<std::size_t>(item)].firstCircle;
         World& world = run.partWorld();
-        world.circles()[static_cast<std::size_t>(circle)].velocity -=
-            world.def().gravity * (kBalloonLift * world.def().timeStep);
+        const CircleId id = world.circleId(circle);
+        world.setVelocity(id, world.circle(id).velocity - world.def().gravity * (kBalloonLift * world.def().timeStep));
     }
     double speedGiven(const ItemDesc& item, double lightest, double g, double seconds) const override {
         (void)item, (void)lightest;

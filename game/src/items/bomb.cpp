@@ -98,9 +98,9 @@ public:
         explosion.centre = desc.position;
         explosion.radius = p.blastRadius;
         explosion.strength = p.strength;
-        const std::vector<int> pushed = applyExplosion(world, explosion);
+        const std::vector<CircleId> pushed = applyExplosion(world, explosion);
         // The casing is gone: shrunk to a speck, since a World cannot remove a body.
-        if (state.firstCircle >= 0) world.circles()[static_cast<std::size_t>(state.firstCircle)].radius = 1e-4;
+        if (state.firstCircle >= 0) world.setRadius(world.circleId(state.firstCircle), 1e-4);
         run.report({EventKind::explosion, run.frame(), world.time(), desc.name, desc.position,
                     static_cast<int>(pushed.size())});
     }

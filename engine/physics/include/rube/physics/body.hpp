@@ -65,6 +65,7 @@ struct Circle {
     double angularVelocity = 0.0; ///< omega, rad/s
     double inverseInertia = 0.0;  ///< 1 / I about the centre; 0 for kinematic and fixed circles
     SleepState sleep;             ///< the solver's rest: asleep circles hold still until something reaches them
+    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it: -1 rises at g (a balloon)
 };
 
 /// A two-sided line segment from a to b with rounded line caps of `radius` at both ends.
@@ -101,6 +102,8 @@ struct CircleDef {
     bool magnetic = false;    ///< magnets pull it (steel)
     double angularVelocity = 0.0; ///< omega at the start, rad/s (a spinning throw)
     double inertiaFactor = 0.5;   ///< I = inertiaFactor m r^2: 1/2 a solid disc, 1 a thin ring
+    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it (dynamic only)
+    std::uint64_t userValue = 0;  ///< the caller's own value (World::userValue)
 };
 
 /// What a caller fills in to add a segment; the default is a static line of zero thickness.

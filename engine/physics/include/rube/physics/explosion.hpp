@@ -7,6 +7,7 @@
 /// same distance. Kinematic and fixed bodies (infinite mass) are untouched.
 
 #include "rube/physics/body.hpp"
+#include "rube/physics/handles.hpp"
 #include "rube/physics/vec2.hpp"
 
 #include <cstdint>
@@ -45,7 +46,8 @@ double explosionImpulse(const Explosion& explosion, double distance);
 /// Returns the indices of the circles it pushed, in increasing order.
 std::vector<int> applyExplosion(std::span<Circle> circles, const Explosion& explosion);
 
-/// The same on a world's circles; segments are fixed or kinematic and never move.
-std::vector<int> applyExplosion(World& world, const Explosion& explosion);
+/// The same on a world's circles (their islands woken); segments are fixed or kinematic and never
+/// move. Returns the handles of the circles it pushed, in slot order.
+std::vector<CircleId> applyExplosion(World& world, const Explosion& explosion);
 
 } // namespace rube

@@ -10,6 +10,7 @@
 /// first-order in dt (except linear drag and a thruster, whose changes are split around the move so
 /// that the body moves exactly: x(t) of dv/dt = g - k v / m, and x = F t^2 / (2m)).
 
+#include "rube/physics/handles.hpp"
 #include "rube/physics/vec2.hpp"
 
 #include <cmath>
@@ -64,7 +65,7 @@ struct Magnet {
 
 /// A thruster (or rocket) fixed to one circle: a constant force from `start` until `end`.
 struct Thruster {
-    int circle = -1;          ///< index of the dynamic circle it pushes
+    CircleId circle;          ///< the dynamic circle it pushes (none while it is disabled)
     Vec2 force;               ///< N, in world axes
     double start = 0.0;       ///< s, world time it lights
     double end = std::numeric_limits<double>::infinity(); ///< s, world time it burns out

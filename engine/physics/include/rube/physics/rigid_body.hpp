@@ -28,6 +28,7 @@ struct RigidBody {
     Material material;
     Motion motion = Motion::dynamic;
     bool fixedRotation = false;   ///< lecture 3's block: stays axis-aligned
+    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it
 };
 
 /// What a caller fills in to add a rigid body; the default is a 1 kg dynamic 1 m x 1 m box.
@@ -41,7 +42,9 @@ struct RigidBodyDef {
     double mass = 1.0;            ///< ignored unless dynamic
     Material material;
     Motion motion = Motion::dynamic;
-    bool fixedRotation = false;
+    bool fixedRotation = false;   ///< lecture 3's block: never turns
+    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it (dynamic only)
+    std::uint64_t userValue = 0;  ///< the caller's own value (World::userValue)
 };
 
 /// True for lecture 3's block, a box that never turns (every method moves it); any other body turns,

@@ -3,6 +3,7 @@
 
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
+#include "rube/physics/handles.hpp"
 #include "rube/physics/pivot.hpp"
 #include "rube/physics/rigid_body.hpp"
 #include "rube/physics/rope.hpp"
@@ -65,16 +66,18 @@ struct WorldDef {
 /// What kind of thing a circle (or a block) hit.
 enum class Other : std::uint8_t { circle, segment, segmentCap, body };
 
-/// One resolved impact: for debugging overlays, game triggers and the trace.
+/// One resolved impact: for debugging overlays, game triggers and the trace. Bodies are named by
+/// their slots in World::circles(), segments() and bodies() during the step (World::circleId(slot)
+/// and its kin give their handles, valid until the next remove, disable or enable).
 struct Impact {
-    int circle = -1;            ///< the dynamic circle
+    int circle = -1;            ///< the dynamic circle's slot
     Other otherKind = Other::circle;
-    int other = -1;             ///< index of the circle or segment it hit
+    int other = -1;             ///< slot of the circle or segment it hit
     double time = 0.0;          ///< world time of the impact, seconds
     Vec2 pointOfImpact;         ///< where the surfaces touch
     Vec2 normal;                ///< unit collision normal, pointing from the other body to the circle
     double approachSpeed = 0.0; ///< normal speed of approach before the resolve, m/s
-    int body = -1;              ///< the block, for a block's impact (circle is then -1; normal points towards the block)
+    int body = -1;              ///< the block's slot, for a block's impact (circle is then -1; normal points towards the block)
 };
 
 /// Counters over the world's life, for the summary and the bench.
@@ -92,12 +95,16 @@ struct StepStats {
     std::int64_t speedClamps = 0;    ///< solver and auto: speeds cut to WorldDef::maxTranslation or maxRotation (one per body and step)
     std::int64_t isolatedBodies = 0; ///< bodies frozen because their state went non-finite (see World::step)
     Other firstIsolatedKind = Other::circle; ///< the first isolated body: a circle or a rigid body (Other::body)
-    int firstIsolated = -1;          ///< its index among the world's circles or bodies, -1 when none was isolated
+    CircleId firstIsolatedCircle;    ///< the first isolated body when it is a circle, else null
+    BodyId firstIsolatedBody;        ///< the first isolated body when it is a rigid body, else null
+    int firstIsolatedSlot = -1;      ///< its slot among the world's circles or bodies when isolated, -1 when none was
 };
 
 class StepMethod;
 struct RopeStart;
 struct FiniteSnapshot;
+struct WorldTables;
+struct SlotRemap;
 
 /// A physics world. Not copyable (it owns its method); movable.
 class World {
@@ -107,22 +114,103 @@ public:
     World(World&&) noexcept;
     World& operator=(World&&) noexcept;
 
-    /// Adds a circle and returns its index.
-    int addCircle(const CircleDef& def);
-    /// Adds a segment and returns its index.
-    int addSegment(const SegmentDef& def);
-    /// Adds a rigid body (box or capsule) and returns its index.
-    int addBody(const RigidBodyDef& def);
-    /// Pins a rigid body to the world at a point, free to turn about it, and returns the pivot's index;
-    /// throws std::invalid_argument for a body index out of range.
-    int addPivot(const PivotDef& def);
-    /// Adds a scripted path for kinematic bodies and returns its index.
+    /// Adds a circle and returns its handle.
+    CircleId addCircle(const CircleDef& def);
+    /// Adds a segment and returns its handle.
+    SegmentId addSegment(const SegmentDef& def);
+    /// Adds a rigid body (box or capsule) and returns its handle.
+    BodyId addBody(const RigidBodyDef& def);
+    /// Pins a rigid body to the world at a point, free to turn about it, and returns the pivot's handle;
+    /// throws std::invalid_argument for a body handle that is not valid.
+    PivotId addPivot(const PivotDef& def);
+    /// Adds a scripted path for kinematic bodies and returns its index (paths are never removed).
     int addPath(KinematicPath path);
-    /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its index;
-    /// throws std::invalid_argument for a circle index out of range or a length that is not positive.
-    int addRope(const RopeDef& def);
-    /// Cuts rope `index`: from the next step on it no longer acts (cutting it again does nothing).
-    void cutRope(int index);
+    /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its handle;
+    /// throws std::invalid_argument for a circle handle that is not valid or a length that is not positive.
+    RopeId addRope(const RopeDef& def);
+    /// Cuts a rope: from the next step on it no longer acts (cutting it again does nothing).
+    void cutRope(RopeId rope);
+
+    /// Removes a circle, and every rope attached to it. Its handle (and theirs) is stale from now on.
+    void remove(CircleId circle);
+    /// Removes a segment.
+    void remove(SegmentId segment);
+    /// Removes a rigid body, and every pivot that pins it.
+    void remove(BodyId body);
+    /// Removes a rope.
+    void remove(RopeId rope);
+    /// Removes a pivot.
+    void remove(PivotId pivot);
+    /// Disables (false) or enables again (true) a circle: a disabled one takes no part in the step
+    /// (no motion, no contacts, its ropes do not act) and keeps its state until it is enabled.
+    void setEnabled(CircleId circle, bool enabled);
+    /// As for circles: a disabled segment is met by nothing.
+    void setEnabled(SegmentId segment, bool enabled);
+    /// As for circles: a disabled rigid body neither moves nor is met, and its pivots do not act.
+    void setEnabled(BodyId body, bool enabled);
+    /// A disabled rope does not act (it also waits while either circle is disabled).
+    void setEnabled(RopeId rope, bool enabled);
+    /// A disabled pivot does not act (it also waits while its body is disabled).
+    void setEnabled(PivotId pivot, bool enabled);
+    /// True while the handle names something of this world (not removed, not null).
+    bool isValid(CircleId id) const;
+    bool isValid(SegmentId id) const; ///< as isValid(CircleId)
+    bool isValid(BodyId id) const;    ///< as isValid(CircleId)
+    bool isValid(RopeId id) const;    ///< as isValid(CircleId)
+    bool isValid(PivotId id) const;   ///< as isValid(CircleId)
+    /// True unless disabled; throws std::invalid_argument for a stale handle (as every accessor below).
+    bool isEnabled(CircleId id) const;
+    bool isEnabled(SegmentId id) const; ///< as isEnabled(CircleId)
+    bool isEnabled(BodyId id) const;    ///< as isEnabled(CircleId)
+    bool isEnabled(RopeId id) const;    ///< as isEnabled(CircleId); a rope whose own switch is on
+    bool isEnabled(PivotId id) const;   ///< as isEnabled(CircleId); a pivot whose own switch is on
+
+    /// The circle's state (also while disabled).
+    const Circle& circle(CircleId id) const;
+    const Segment& segment(SegmentId id) const; ///< the segment's state
+    const RigidBody& body(BodyId id) const;     ///< the rigid body's state
+    const Rope& rope(RopeId id) const;          ///< the rope (its slots are -1 while it waits)
+    const Pivot& pivot(PivotId id) const;       ///< the pivot (its slot is -1 while it waits)
+    /// Its slot in circles() (and in Impact), -1 while disabled.
+    int slot(CircleId id) const;
+    int slot(SegmentId id) const; ///< its slot in segments(), -1 while disabled
+    int slot(BodyId id) const;    ///< its slot in bodies(), -1 while disabled
+    int slot(RopeId id) const;    ///< its slot in ropes(), -1 while it does not act
+    int slot(PivotId id) const;   ///< its slot in pivots(), -1 while it does not act
+    /// The handle of the circle in `slot` of circles(); throws std::out_of_range past the end.
+    CircleId circleId(int slot) const;
+    SegmentId segmentId(int slot) const; ///< the handle of segments()[slot]
+    BodyId bodyId(int slot) const;       ///< the handle of bodies()[slot]
+    RopeId ropeId(int slot) const;       ///< the handle of ropes()[slot]
+    PivotId pivotId(int slot) const;     ///< the handle of pivots()[slot]
+
+    /// The caller's own value for a circle (0 until set; also CircleDef::userValue).
+    std::uint64_t userValue(CircleId id) const;
+    std::uint64_t userValue(BodyId id) const; ///< as for circles (RigidBodyDef::userValue)
+    /// Sets the caller's value for a circle, for its own bookkeeping.
+    void setUserValue(CircleId id, std::uint64_t value);
+    void setUserValue(BodyId id, std::uint64_t value); ///< as for circles
+
+    // Setters between steps. Each wakes the island of a sleeping circle it changes.
+    /// Moves a circle's centre (a kinematic one's path origin moves with it).
+    void setPosition(CircleId id, Vec2 position);
+    void setPosition(BodyId id, Vec2 position); ///< moves a rigid body's centre of mass
+    /// Sets a dynamic circle's velocity, m/s.
+    void setVelocity(CircleId id, Vec2 velocity);
+    void setVelocity(BodyId id, Vec2 velocity); ///< as for circles
+    /// Sets a circle's spin, rad/s (only a circle with inertia turns).
+    void setAngularVelocity(CircleId id, double omega);
+    void setAngularVelocity(BodyId id, double omega); ///< as for circles
+    /// Adds an impulse at the centre, N s: Delta v = J / m (nothing for infinite mass).
+    void applyImpulse(CircleId id, Vec2 impulse);
+    void applyImpulse(BodyId id, Vec2 impulse); ///< as for circles
+    /// Adds an impulse at a world point: Delta v = J / m, Delta omega = (r x J) / I (lecture 3).
+    void applyImpulseAt(BodyId id, Vec2 impulse, Vec2 point);
+    /// Sets how much of the world's gravity acts on it: 1 all, 0 none, -1 it rises at g (a balloon).
+    void setGravityScale(CircleId id, double scale);
+    void setGravityScale(BodyId id, double scale); ///< as for circles
+    /// Sets a circle's radius, m (a changed shape: the world finds its contacts anew).
+    void setRadius(CircleId id, double radius);
 
     /// The world's winds, magnets and thrusters: add to them, or switch them, between steps.
     Fields& fields() { return fields_; }
@@ -144,19 +232,33 @@ public:
     /// The impacts resolved during the last step, in the order they were resolved.
     std::span<const Impact> lastImpacts() const { return impacts_; }
 
-    std::span<Circle> circles() { return circles_; }
+    /// The enabled circles, packed in insertion order (a slot is a position in this span).
     std::span<const Circle> circles() const { return circles_; }
-    std::span<Segment> segments() { return segments_; }
+    /// The enabled segments, packed in insertion order.
     std::span<const Segment> segments() const { return segments_; }
-    std::span<RigidBody> bodies() { return bodies_; }
+    /// The enabled rigid bodies, packed in insertion order.
     std::span<const RigidBody> bodies() const { return bodies_; }
+    /// The scripted paths, by index.
     std::span<const KinematicPath> paths() const { return paths_; }
+    /// The ropes that act (enabled, both ends enabled), cut ones too, in insertion order.
     std::span<const Rope> ropes() const { return ropes_; }
+    /// The pivots that act (enabled, body enabled), in insertion order.
     std::span<const Pivot> pivots() const { return pivots_; }
 
 private:
     void moveKinematicBodies();
     void checkState();
+    void applyGravityScales(double dt);
+    void nameFirstIsolated();
+    void resolveThrusters();
+    Circle& circleState(CircleId id);
+    RigidBody& bodyState(BodyId id);
+    void wakeCircle(const Circle& c);
+    void wakeNear(const Segment& s);
+    void remapSlots(const SlotRemap& remap);
+    void leaveCircle(int entry);
+    void leaveBody(int entry);
+    void syncJoints();
 
     WorldDef def_;
     std::vector<Circle> circles_;
@@ -171,6 +273,7 @@ private:
     std::vector<std::uint8_t> escaped_;
     std::vector<std::uint8_t> escapedBodies_; ///< per rigid body, as escaped_ per circle
     std::unique_ptr<StepMethod> method_;
+    std::unique_ptr<WorldTables> tables_;   ///< handles, and what is disabled (world_handles.hpp)
     std::unique_ptr<FiniteSnapshot> finite_; ///< each body's last finite pose, for isolating one that goes non-finite
     StepStats stats_;
     double time_ = 0.0;

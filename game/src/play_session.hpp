@@ -3,6 +3,8 @@
 /// editing state (items placed from the inventory, cannon aims), runs the machine, and remembers
 /// it all as a script that `rube run` replays off-screen. It sees the window only as an
 /// InputListener and a DrawList, so a test drives it with made-up events exactly as GLFW would.
+/// Its members are defined by responsibility: play_session.cpp (state, running, the script),
+/// play_input.cpp, play_editing.cpp and play_drawing.cpp.
 
 #include "debug_overlays.hpp"
 #include "inventory_bar.hpp"

@@ -48,7 +48,7 @@ TEST_CASE("feather: the thrown ball follows the exact solution under drag and si
     const SceneDesc level = loadFeather();
     REQUIRE(level.world.method == Method::automatic); // the level's default: what a player gets
     LevelRun run(level, {});
-    const Circle& ball = run.world().circles()[static_cast<std::size_t>(run.states()[static_cast<std::size_t>(run.find("feather"))].firstCircle)];
+    const Circle& ball = run.world().circle(run.states()[static_cast<std::size_t>(run.find("feather"))].circle);
     const Vec2 p0 = ball.position, v0 = ball.velocity;
     const double m = 1.0 / ball.inverseMass, g = -level.world.gravity.y;
     const double k = 2.0 * ball.radius * level.world.airDrag.linear;

@@ -178,10 +178,14 @@ TEST_CASE("a bomb pushes only the bodies within its blast radius", "[level][expl
                                        "position = [0, 0]\nblast_radius = 2\nstrength = 4\n[[item]]\nkind = \"steel\"\nposition = [1, 0]\n"
                                        "[[item]]\nkind = \"steel\"\nposition = [3, 0]\n");
     LevelRun run(level, {});
+    const CircleId casing = run.states()[0].circle;
     run.detonate(run.find("B"));
-    const auto circles = run.world().circles();
-    CHECK(circles[1].velocity.x == Approx(4.0 * 0.5 / 4.0)); // J = 4 (1 - 1/2), m = 4 kg
-    CHECK(circles[2].velocity == Vec2{});
+    CHECK(run.world().circle(run.states()[1].circle).velocity.x == Approx(4.0 * 0.5 / 4.0)); // J = 4 (1 - 1/2), m = 4 kg
+    CHECK(run.world().circle(run.states()[2].circle).velocity == Vec2{});
+    // The casing is gone from the world, and its handle says so.
+    CHECK(run.world().circles().size() == 2);
+    CHECK_FALSE(run.world().isValid(casing));
+    CHECK(run.states()[0].circle.isNull());
     REQUIRE(run.events().size() == 1);
     CHECK(run.events()[0].count == 1);
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace rube::game {
 
@@ -16,12 +18,16 @@ constexpr double kRestSeconds = 0.5;
 // A path's velocity is its offset's change over this step, s (paths are straight between keys).
 constexpr double kPathProbe = 1e-3;
 
+// What a World circle is to the game, kept in its user value: item i's circle holds i + 1, a shot
+// holds kShotMark, the scene's own circles hold 0.
+constexpr std::uint64_t kShotMark = std::uint64_t{1} << 63;
+
 } // namespace
 
 LevelRun::LevelRun(const SceneDesc& scene, const std::vector<Placement>& placements)
     : scene_(scene), world_(buildWorld(scene)) {
-    circleItem_.assign(world_.circles().size(), -1);
-    projectile_.assign(world_.circles().size(), 0);
+    // buildWorld adds the scene's ropes first and in file order, so rope i is in slot i now.
+    for (std::size_t i = 0; i < scene.ropes.size(); ++i) ropes_.push_back(world_.ropeId(static_cast<int>(i)));
     for (const ItemDesc& item : scene.level.items) addItem(item);
     for (const Placement& p : placements) addItem(placedItem(p));
 }
@@ -30,16 +36,12 @@ void LevelRun::addItem(const ItemDesc& item) {
     ItemState state;
     state.aim = item.angle;
     const ItemBodies bodies = itemBodies(item);
-    for (const CircleDef& c : bodies.circles) {
-        const int index = world_.slot(world_.addCircle(c));
-        if (state.firstCircle < 0) state.firstCircle = index;
-        circleItem_.push_back(static_cast<int>(items_.size()));
-        projectile_.push_back(0);
+    for (CircleDef c : bodies.circles) {
+        c.userValue = items_.size() + 1;
+        const CircleId circle = world_.addCircle(c);
+        if (state.circle.isNull()) state.circle = circle;
     }
-    for (const SegmentDef& s : bodies.segments) {
-        const int index = world_.slot(world_.addSegment(s));
-        if (state.firstSegment < 0) state.firstSegment = index;
-    }
+    for (const SegmentDef& s : bodies.segments) world_.addSegment(s);
     Fields& fields = world_.fields();
     if (bodies.magnet) {
         state.field = static_cast<int>(fields.magnets.size());
@@ -52,7 +54,7 @@ void LevelRun::addItem(const ItemDesc& item) {
     if (bodies.thruster) {
         state.field = static_cast<int>(fields.thrusters.size());
         fields.thrusters.push_back(*bodies.thruster);
-        fields.thrusters.back().circle = state.firstCircle >= 0 ? world_.circleId(state.firstCircle) : CircleId{};
+        fields.thrusters.back().circle = state.circle;
     }
     items_.push_back(item);
     states_.push_back(state);
@@ -64,11 +66,16 @@ int LevelRun::find(std::string_view name) const {
     return -1;
 }
 
-bool LevelRun::isProjectile(int circle) const { return projectile_[static_cast<std::size_t>(circle)] != 0; }
+int LevelRun::itemOf(CircleId circle) const {
+    const std::uint64_t value = world_.userValue(circle);
+    return value == 0 || value == kShotMark ? -1 : static_cast<int>(value - 1);
+}
+
+bool LevelRun::isProjectile(CircleId circle) const { return world_.userValue(circle) == kShotMark; }
 
 Vec2 LevelRun::itemPosition(int item) const {
     const ItemState& state = states_[static_cast<std::size_t>(item)];
-    if (state.firstCircle >= 0) return world_.circles()[static_cast<std::size_t>(state.firstCircle)].position;
+    if (!state.circle.isNull()) return world_.circle(state.circle).position;
     return items_[static_cast<std::size_t>(item)].position;
 }
 
@@ -79,7 +86,7 @@ Vec2 LevelRun::itemVelocity(int item) const {
         return (path.offsetAt(world_.time() + kPathProbe) - path.offsetAt(world_.time())) / kPathProbe;
     }
     const ItemState& state = states_[static_cast<std::size_t>(item)];
-    if (state.firstCircle >= 0) return world_.circles()[static_cast<std::size_t>(state.firstCircle)].velocity;
+    if (!state.circle.isNull()) return world_.circle(state.circle).velocity;
     return {};
 }
 
@@ -118,9 +125,8 @@ void LevelRun::fire(int cannon) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
     CircleDef def = *item.kind->shot(item);
     def.velocity = launchVelocity(cannon);
+    def.userValue = kShotMark;
     world_.addCircle(def);
-    circleItem_.push_back(-1);
-    projectile_.push_back(1);
     state.fired = true;
     events_.push_back({EventKind::shot, frame(), world_.time(), item.name, item.position, 0});
 }
@@ -144,13 +150,16 @@ void LevelRun::detonate(int bomb) { toggle(bomb); }
 void LevelRun::toggle(int item) { items_[static_cast<std::size_t>(item)].kind->trigger(*this, item); }
 
 void LevelRun::cutRope(std::string_view name) {
-    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(world_.ropeId(rope));
+    if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(ropes_[static_cast<std::size_t>(rope)]);
 }
 
 void LevelRun::step() {
     const double dt = world_.def().timeStep;
     for (std::size_t i = 0; i < items_.size(); ++i) items_[i].kind->beforeStep(*this, static_cast<int>(i));
     world_.step();
+    // The items struck, in the order of the impacts, gathered first: a hit may remove a body (a bomb
+    // going off), which renumbers the world's slots and its list of impacts.
+    std::vector<std::pair<int, Vec2>> struckItems;
     for (const Impact& impact : world_.lastImpacts()) {
         // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact
         // has circle -1 and body set), or the circle a body struck (a ball's impact on a body).
@@ -158,9 +167,9 @@ void LevelRun::step() {
         if (impact.otherKind == Other::circle) struck = impact.other;
         else if (impact.otherKind == Other::body && impact.circle >= 0) struck = impact.circle;
         if (struck < 0) continue;
-        const int item = circleItem_[static_cast<std::size_t>(struck)];
-        if (item >= 0) items_[static_cast<std::size_t>(item)].kind->hit(*this, item, impact.pointOfImpact);
+        if (const int item = itemOf(world_.circleId(struck)); item >= 0) struckItems.emplace_back(item, impact.pointOfImpact);
     }
+    for (const auto& [item, point] : struckItems) items_[static_cast<std::size_t>(item)].kind->hit(*this, item, point);
     for (std::size_t i = 0; i < items_.size(); ++i) {
         items_[i].kind->afterStep(*this, static_cast<int>(i));
         if (states_[i].timedShot && world_.time() >= *states_[i].timedShot - 0.5 * dt) {

@@ -28,10 +28,9 @@ struct GameEvent {
     int count = 0;          ///< explosions: bodies pushed
 };
 
-/// Where one item's bodies are in the World, and what has happened to it.
+/// Which of the World's bodies is an item's, and what has happened to it.
 struct ItemState {
-    int firstCircle = -1;       ///< its circle in the World, or -1
-    int firstSegment = -1;      ///< its first segment in the World, or -1
+    CircleId circle;            ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
     double aim = 0.0;           ///< cannons: the barrel's angle now, radians
     bool hit = false;           ///< targets and switches: touched by a ball
     bool fired = false;         ///< cannons: have shot
@@ -46,7 +45,7 @@ public:
     /// The world of `scene` with `placements` added as items after the fixed ones.
     LevelRun(const SceneDesc& scene, const std::vector<Placement>& placements);
 
-    /// Advances one step: balloon lift, the physics, then timers, hits, switches and the goal.
+    /// Advances one step: the kinds' work before it, the physics, then timers, hits, switches and the goal.
     void step();
 
     /// The world as it is now.
@@ -65,8 +64,10 @@ public:
     const std::optional<Goal>& goal() const { return scene_.level.goal; }
     /// The index of the item called `name`, or -1.
     int find(std::string_view name) const;
+    /// The item World circle `circle` belongs to, or -1 (shots and the scene's own circles).
+    int itemOf(CircleId circle) const;
     /// True when World circle `circle` was shot from a cannon.
-    bool isProjectile(int circle) const;
+    bool isProjectile(CircleId circle) const;
     /// The scene the level was built from.
     const SceneDesc& scene() const { return scene_; }
 
@@ -112,8 +113,7 @@ private:
     World world_;
     std::vector<ItemDesc> items_;
     std::vector<ItemState> states_;
-    std::vector<int> circleItem_;       // World circle -> the item it belongs to, or -1
-    std::vector<char> projectile_;      // World circle -> shot from a cannon
+    std::vector<RopeId> ropes_;         // the scene's [[rope]] i (SceneDesc::ropes) -> its rope in the World
     std::vector<GameEvent> events_;
     std::optional<std::int64_t> goalFrame_;
     std::int64_t bucketRestSteps_ = 0;  // consecutive steps a ball has rested in the goal's bucket

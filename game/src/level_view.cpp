@@ -50,17 +50,15 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
     drawRigidBodies(world, list);
     drawAirDrag(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
-    std::vector<char> itemCircle(world.circles().size(), 0);
-    for (std::size_t i = 0; i < run.items().size(); ++i)
-        if (run.states()[i].firstCircle >= 0) itemCircle[static_cast<std::size_t>(run.states()[i].firstCircle)] = 1;
     for (std::size_t i = 0; i < world.circles().size(); ++i) {
-        if (itemCircle[i]) continue;
+        const CircleId id = world.circleId(static_cast<int>(i));
+        if (run.itemOf(id) >= 0) continue;
         const Circle& c = world.circles()[i];
         const Style look = c.motion == Motion::dynamic ? style("ball", "ball_outline")
                          : c.motion == Motion::kinematic ? style("kinematic", "kinematic_outline")
                                                           : style("ground", "ground_outline");
         list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()), look);
-        if (run.isProjectile(static_cast<int>(i)))
+        if (run.isProjectile(id))
             list.arrow(pt(c.position), pt(c.position + c.velocity * kArrowSeconds), 2.0f, Palette::greybox()["arrow"]);
     }
 }

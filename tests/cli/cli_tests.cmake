@@ -155,8 +155,8 @@ rube_cli_test("level with --trails is refused" "run|${RUBE_GAME_LEVELS}/ramp.tom
 # The balloon's chain: the switch is hit and fires the cannon in one step, then the shot hits the target.
 rube_cli_test("level balloon summary.json has the goal frame and the hits"
               "run|${RUBE_GAME_LEVELS}/balloon.toml|--script|${RUBE_GAME_LEVELS}/balloon.solution.toml|--out|${frames}/balloon|--size|32x18" 0
-              -DFRAMES_DIR=${frames}/balloon "-DSTDOUT_MATCH=goal: +reached at frame 276\n.*summary in ${frames}/balloon/summary.json"
-              "-DSUMMARY_MATCH=\"goal_reached\": true,\n  \"goal_frame\": 276,.*\"kind\": \"hit\", \"frame\": 94, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\].*\"kind\": \"shot\", \"frame\": 94, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"frame\": 276, [^\n]*\"item\": \"bullseye\".*\"kind\": \"goal\", \"frame\": 276,.*\"expect\": \"'bullseye' hit before frame 400\", \"met\": true")
+              -DFRAMES_DIR=${frames}/balloon "-DSTDOUT_MATCH=goal: +reached at frame 277\n.*summary in ${frames}/balloon/summary.json"
+              "-DSUMMARY_MATCH=\"goal_reached\": true,\n  \"goal_frame\": 277,.*\"kind\": \"hit\", \"frame\": 95, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\].*\"kind\": \"shot\", \"frame\": 95, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"frame\": 277, [^\n]*\"item\": \"bullseye\".*\"kind\": \"goal\", \"frame\": 277,.*\"expect\": \"'bullseye' hit before frame 400\", \"met\": true")
 
 # `rube play` (issue 7). Without a display it says so in one line and names the ways on (exit 1);
 # bad input is found before any window is asked for (exit 2). DISPLAY is unset for all of them.

@@ -42,8 +42,8 @@ TEST_CASE("peg: a ball dropped on its top leaves with (C_ball x C_peg) of its sp
             const SceneLoad load = parseScene(dropOnPeg(ball.kind, gap, ball.radius), "peg.toml");
             REQUIRE(load.ok());
             LevelRun run(*load.scene, {});
-            const int peg = run.states()[0].firstCircle, moving = run.states()[1].firstCircle;
-            const double start = run.world().circles()[static_cast<std::size_t>(moving)].position.y;
+            const CircleId peg = run.states()[0].circle, moving = run.states()[1].circle;
+            const double start = run.world().circle(moving).position.y;
             const double contact = start - gap; // the ball's centre when it touches the peg's top
             const double g = -run.world().def().gravity.y;
             // Find the first step after the bounce: in free flight v^2 + 2 g (y - contact) is the rebound
@@ -51,7 +51,7 @@ TEST_CASE("peg: a ball dropped on its top leaves with (C_ball x C_peg) of its sp
             bool bounced = false;
             for (int i = 0; i < 1000 && !bounced; ++i) {
                 run.step();
-                const Circle& c = run.world().circles()[static_cast<std::size_t>(moving)];
+                const Circle& c = run.world().circle(moving);
                 if (c.velocity.y <= 0.0) continue;
                 bounced = true;
                 const double e = ball.bounciness * kPegBounciness;
@@ -60,7 +60,7 @@ TEST_CASE("peg: a ball dropped on its top leaves with (C_ball x C_peg) of its sp
                 CHECK(std::abs(c.velocity.x) < 1e-12); // straight down on its top: no kick aside
             }
             REQUIRE(bounced);
-            const Circle& pin = run.world().circles()[static_cast<std::size_t>(peg)];
+            const Circle& pin = run.world().circle(peg);
             CHECK(pin.motion == Motion::fixed);
             CHECK(pin.position == Vec2{0.0, 0.0});
             CHECK(pin.radius == kPegRadius);

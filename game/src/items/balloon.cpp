@@ -4,9 +4,8 @@
 namespace rube::game::parts {
 namespace {
 
-// A balloon is lifted by 2 |g| per second squared, so it rises at g: the effective gravity -g.
-// The physics has one gravity for all bodies, so the lift is added to its velocity each step.
-constexpr double kBalloonLift = 2.0;
+// A balloon rises at g: gravity acts on it with scale -1 (its lift is 2 |g| against gravity's |g|).
+constexpr double kBalloonGravityScale = -1.0;
 
 class BalloonKind final : public BallKind {
 public:
@@ -15,20 +14,15 @@ public:
     std::string_view summary() const override {
         return "a blue 0.1 kg ball on a string, radius 0.35 m, bounciness 0.5, lifted by 2 |g|: it rises at g";
     }
-    void beforeStep(LevelRun& run, int item) const override {
-        const int circle = run.states()[static_cast<std::size_t>(item)].firstCircle;
-        World& world = run.partWorld();
-        const CircleId id = world.circleId(circle);
-        world.setVelocity(id, world.circle(id).velocity - world.def().gravity * (kBalloonLift * world.def().timeStep));
-    }
     double speedGiven(const ItemDesc& item, double lightest, double g, double seconds) const override {
         (void)item, (void)lightest;
-        return 2.0 * g * seconds; // its lift, 2 g, against gravity's g
+        return (1.0 - kBalloonGravityScale) * g * seconds; // its lift, 2 g, against gravity's g
     }
 
 protected:
     double radius() const override { return 0.35; }
     double mass() const override { return 0.1; }
+    double gravityScale() const override { return kBalloonGravityScale; }
     double bounciness() const override { return 0.5; }
     render::Style look() const override { return style("highlight", "ball_outline"); }
     void decorateBehind(const Circle& c, render::DrawList& list) const override {

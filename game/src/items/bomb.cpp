@@ -99,8 +99,9 @@ public:
         explosion.radius = p.blastRadius;
         explosion.strength = p.strength;
         const std::vector<CircleId> pushed = applyExplosion(world, explosion);
-        // The casing is gone: shrunk to a speck, since a World cannot remove a body.
-        if (state.firstCircle >= 0) world.setRadius(world.circleId(state.firstCircle), 1e-4);
+        // The casing is gone with the blast.
+        world.remove(state.circle);
+        state.circle = {};
         run.report({EventKind::explosion, run.frame(), world.time(), desc.name, desc.position,
                     static_cast<int>(pushed.size())});
     }

@@ -92,6 +92,7 @@ public:
         ball.mass = mass();
         ball.material = bouncy(bounciness());
         ball.magnetic = magnetic();
+        ball.gravityScale = gravityScale();
         ItemBodies bodies;
         bodies.circles.push_back(ball);
         return bodies;
@@ -99,8 +100,7 @@ public:
     std::optional<CircleDef> shot(const ItemDesc& item) const override { return bodies(item).circles.front(); }
     void draw(const PartDrawing& d) const override {
         const ItemState& state = stateOf(d);
-        if (state.firstCircle < 0) return;
-        const Circle& c = d.run.world().circles()[static_cast<std::size_t>(state.firstCircle)];
+        const Circle& c = d.run.world().circle(state.circle);
         decorateBehind(c, d.list);
         d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()),
                                look());
@@ -121,6 +121,8 @@ protected:
     virtual double bounciness() const = 0;
     /// True when magnets pull it.
     virtual bool magnetic() const { return false; }
+    /// How much of the world's gravity acts on it (World: gravity scale): 1, or -1 for a balloon that rises.
+    virtual double gravityScale() const { return 1.0; }
     /// Its fill and outline.
     virtual render::Style look() const { return style("ball", "ball_outline"); }
     /// Drawn before the ball (a balloon's string).

@@ -111,7 +111,7 @@ public:
         const ItemDesc& item = itemOf(d);
         const ItemState& state = stateOf(d);
         const World& world = d.run.world();
-        const Circle& c = world.circles()[static_cast<std::size_t>(state.firstCircle)];
+        const Circle& c = world.circle(state.circle);
         const Thruster& thruster = world.fields().thrusters[static_cast<std::size_t>(state.field)];
         const Vec2 direction = Vec2::fromAngle(item.angle);
         const double t = world.time();

@@ -71,7 +71,7 @@ public:
     }
     void trigger(LevelRun& run, int item) const override {
         const std::string& name = run.items()[static_cast<std::size_t>(item)].params.as<SwitchParams>().triggers;
-        if (const int rope = run.scene().findRope(name); rope >= 0) return run.partWorld().cutRope(run.partWorld().ropeId(rope));
+        if (run.scene().findRope(name) >= 0) return run.cutRope(name);
         if (const int target = run.find(name); target >= 0)
             run.items()[static_cast<std::size_t>(target)].kind->trigger(run, target);
     }

@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace rube::render {
@@ -185,6 +186,17 @@ public:
     virtual void draw(const PartDrawing& drawing) const = 0;
     /// Draws its inventory icon, `size` across (world units) at `centre`, faded when none is left.
     virtual void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const;
+
+protected:
+    /// An item of this kind at `position` holding `params`: what every kind's make() returns.
+    template <class P>
+    ItemDesc made(Vec2 position, P params) const {
+        ItemDesc item;
+        item.kind = this;
+        item.position = position;
+        item.params = PartParams(std::move(params));
+        return item;
+    }
 };
 
 /// Every kind, in order().

@@ -45,13 +45,7 @@ public:
     bool plays(PartRole role) const override {
         return role == PartRole::detonate || role == PartRole::aimTarget || role == PartRole::triggered;
     }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(BombParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, BombParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         BombParams& p = item.params.as<BombParams>();

@@ -24,13 +24,7 @@ public:
     std::span<const PartKey> keys() const override { return kKeys; }
     bool needsName() const override { return true; }
     bool plays(PartRole role) const override { return role == PartRole::aimTarget || role == PartRole::goalBucket; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(BucketParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, BucketParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         BucketParams& p = item.params.as<BucketParams>();

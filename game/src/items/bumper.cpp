@@ -17,13 +17,7 @@ public:
     std::string_view summary() const override { return "a fixed round part, radius 0.4 m, bounciness 1"; }
     std::span<const PartKey> keys() const override { return kKeys; }
     bool placeable() const override { return true; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(BumperParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, BumperParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         if (const auto r = table.number("radius", kSizeRange)) item.params.as<BumperParams>().radius = *r;

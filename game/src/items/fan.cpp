@@ -62,13 +62,7 @@ public:
     bool placeable() const override { return true; }
     bool turns() const override { return true; }
     bool plays(PartRole role) const override { return role == PartRole::toggle || role == PartRole::triggered; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(FanParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, FanParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         FanParams& p = item.params.as<FanParams>();

@@ -34,13 +34,7 @@ public:
     std::span<const PartKey> keys() const override { return kKeys; }
     bool placeable() const override { return true; }
     bool plays(PartRole role) const override { return role == PartRole::toggle || role == PartRole::triggered; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(MagnetParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, MagnetParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         MagnetParams& p = item.params.as<MagnetParams>();

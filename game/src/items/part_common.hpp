@@ -70,13 +70,7 @@ public:
     bool isBall() const override { return true; }
     bool placeable() const override { return true; }
     std::span<const PartKey> keys() const override { return kBallKeys; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(BallParams{radius(), {}});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, BallParams{radius(), {}}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         BallParams& p = item.params.as<BallParams>();
@@ -146,13 +140,7 @@ public:
     bool placeable() const override { return true; }
     bool turns() const override { return true; }
     std::span<const PartKey> keys() const override { return kBoardKeys; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(BoardParams{length()});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, BoardParams{length()}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         if (const auto a = table.number("angle", kAngleRange)) item.angle = radians(*a);

@@ -19,13 +19,7 @@ public:
     int order() const override { return 15; }
     std::string_view summary() const override { return "a small fixed round pin, radius 0.12 m, bounciness 0.8"; }
     std::span<const PartKey> keys() const override { return kKeys; }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(PegParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, PegParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         if (const auto r = table.number("radius", kSizeRange)) item.params.as<PegParams>().radius = *r;

@@ -33,13 +33,7 @@ public:
     bool plays(PartRole role) const override {
         return role == PartRole::toggle || role == PartRole::aimTarget || role == PartRole::hitReport;
     }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(SwitchParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, SwitchParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         SwitchParams& p = item.params.as<SwitchParams>();

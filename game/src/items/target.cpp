@@ -26,13 +26,7 @@ public:
     bool plays(PartRole role) const override {
         return role == PartRole::aimTarget || role == PartRole::hitReport || role == PartRole::goalTarget;
     }
-    ItemDesc make(Vec2 position) const override {
-        ItemDesc item;
-        item.kind = this;
-        item.position = position;
-        item.params = PartParams(TargetParams{});
-        return item;
-    }
+    ItemDesc make(Vec2 position) const override { return made(position, TargetParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         TargetParams& p = item.params.as<TargetParams>();
         if (const auto r = table.number("radius", kSizeRange)) p.radius = *r;

@@ -8,6 +8,7 @@
 #include "rube/render/palette.hpp"
 #include "rube/render/render_context.hpp"
 #include "rube/render/screenshot.hpp"
+#include "rube/render/video_writer.hpp"
 
 #include "shape_instance.hpp" // internal: how a draw list becomes shader instances
 
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -339,5 +341,51 @@ TEST_CASE("contexts: bad requests fail with a reason, before any GL is touched",
     // Without a display a window cannot open; the error says so instead of crashing.
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr) {
         CHECK_THROWS_WITH(createWindowContext({320, 240}), Catch::Contains("GLFW"));
+    }
+}
+
+TEST_CASE("GL back ends: names round-trip; one not built is refused with how the build was made", "[render]") {
+    for (GlBackend backend : {GlBackend::automatic, GlBackend::egl, GlBackend::osmesa}) {
+        INFO(glBackendName(backend));
+        CHECK(glBackendFromName(glBackendName(backend)) == backend);
+        if (!glBackendBuilt(backend)) {
+            CHECK_THROWS_WITH(createOffscreenContext({64, 64}, backend), Catch::Contains("built without"));
+        }
+    }
+    CHECK((glBackendBuilt(GlBackend::egl) || glBackendBuilt(GlBackend::osmesa))); // CMake refuses a build with neither
+    for (const char* name : {"", "EGL", "gl", "auto ", "mesa"}) CHECK_FALSE(glBackendFromName(name));
+    // An empty size is refused before any back end is tried, whichever is asked for.
+    for (GlBackend backend : {GlBackend::automatic, GlBackend::egl, GlBackend::osmesa}) {
+        CHECK_THROWS_AS(createOffscreenContext({640, 0}, backend), std::invalid_argument);
+    }
+}
+
+TEST_CASE("videos: the format follows the extension, H.264 refuses odd sides", "[render]") {
+    CHECK(videoFormatOf("a/b.mp4") == VideoFormat::mp4);
+    CHECK(videoFormatOf("B.WebM") == VideoFormat::webm);
+    CHECK(videoFormatOf("c.gif") == VideoFormat::gif);
+    for (const char* name : {"d.avi", "mp4", "e.mp4.part", "f", ".gif.x"}) CHECK_FALSE(videoFormatOf(name));
+    for (int w = 1; w <= 8; ++w) {
+        for (int h = 1; h <= 8; ++h) {
+            CHECK(videoSizeProblem(VideoFormat::mp4, {w, h}).empty() == (w % 2 == 0 && h % 2 == 0));
+            CHECK(videoSizeProblem(VideoFormat::webm, {w, h}).empty());
+            CHECK(videoSizeProblem(VideoFormat::gif, {w, h}).empty());
+        }
+    }
+}
+
+TEST_CASE("videos: the frame rate given to ffmpeg is 1 / (time step x every), reduced, to a thousandth", "[render]") {
+    for (double dt : {1.0 / 60, 1.0 / 120, 1.0 / 100, 1.0 / 30, 0.005, 1.0 / 240, 0.0125}) {
+        for (int every = 1; every <= 12; ++every) {
+            const double rate = 1.0 / (dt * every);
+            const std::string text = ffmpegRate(rate);
+            INFO("dt " << dt << " every " << every << ": " << text);
+            const std::size_t slash = text.find('/');
+            const long long numerator = std::stoll(text.substr(0, slash));
+            const long long denominator = slash == std::string::npos ? 1 : std::stoll(text.substr(slash + 1));
+            CHECK(std::abs(static_cast<double>(numerator) / static_cast<double>(denominator) - rate) <= 0.0005 + 1e-12);
+            CHECK(std::gcd(numerator, denominator) == 1);
+            CHECK(denominator <= 1000);
+        }
     }
 }

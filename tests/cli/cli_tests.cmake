@@ -48,7 +48,7 @@ rube_cli_test("run steps from duration" "run|${RUBE_LEVELS}/projectile.toml|--no
 rube_cli_test("run method override" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--steps|3|--method|discrete" 0
               "-DSTDOUT_MATCH=method: +discrete\n")
 rube_cli_test("run without --out or --no-render notes it" "run|${RUBE_LEVELS}/bounce.toml|--steps|1" 0
-              "-DSTDERR_LINE=rube run: note: no frames written without --out DIR (--no-render runs headless without this note)")
+              "-DSTDERR_LINE=rube run: note: no frames written without --out DIR or --video FILE (--no-render runs headless without this note)")
 
 # Frames: --out DIR writes frame_00000.png (the initial state) and one frame every --every steps.
 # Small frames keep these quick; the pictures themselves are the screenshot tests' business.
@@ -79,7 +79,7 @@ rube_cli_test("usage bad every" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/
 rube_cli_test("usage --out with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--out|${frames}/x" 2
               "-DSTDERR_LINE=rube: --no-render excludes --out (see 'rube run --help')")
 rube_cli_test("usage --trails without --out" "run|${RUBE_LEVELS}/bounce.toml|--trails" 2
-              "-DSTDERR_LINE=rube: --trails requires --out (see 'rube run --help')")
+              "-DSTDERR_LINE=rube: --trails requires --out or --video (see 'rube run --help')")
 
 # Failed runs: status 2, one line, and no trace (nor a temporary) left behind.
 rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-key.toml|--no-render|--trace|${RUBE_CLI_OUT}/bad.csv" 2

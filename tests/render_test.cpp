@@ -344,7 +344,7 @@ TEST_CASE("contexts: bad requests fail with a reason, before any GL is touched",
     }
 }
 
-TEST_CASE("GL back ends: names round-trip; one not built is refused with how the build was made", "[render]") {
+TEST_CASE("GL back ends: names round-trip, and one not built is refused with how the build was made", "[render]") {
     for (GlBackend backend : {GlBackend::automatic, GlBackend::egl, GlBackend::osmesa}) {
         INFO(glBackendName(backend));
         CHECK(glBackendFromName(glBackendName(backend)) == backend);
@@ -374,18 +374,30 @@ TEST_CASE("videos: the format follows the extension, H.264 refuses odd sides", "
     }
 }
 
-TEST_CASE("videos: the frame rate given to ffmpeg is 1 / (time step x every), reduced, to a thousandth", "[render]") {
-    for (double dt : {1.0 / 60, 1.0 / 120, 1.0 / 100, 1.0 / 30, 0.005, 1.0 / 240, 0.0125}) {
-        for (int every = 1; every <= 12; ++every) {
-            const double rate = 1.0 / (dt * every);
-            const std::string text = ffmpegRate(rate);
-            INFO("dt " << dt << " every " << every << ": " << text);
-            const std::size_t slash = text.find('/');
-            const long long numerator = std::stoll(text.substr(0, slash));
-            const long long denominator = slash == std::string::npos ? 1 : std::stoll(text.substr(slash + 1));
-            CHECK(std::abs(static_cast<double>(numerator) / static_cast<double>(denominator) - rate) <= 0.0005 + 1e-12);
-            CHECK(std::gcd(numerator, denominator) == 1);
-            CHECK(denominator <= 1000);
+TEST_CASE("videos: the frame rate given to ffmpeg is 1 / (time step x every) as a reduced fraction", "[render]") {
+    const auto parse = [](const std::string& text) {
+        const std::size_t slash = text.find('/');
+        return std::pair{std::stoll(text.substr(0, slash)), slash == std::string::npos ? 1LL : std::stoll(text.substr(slash + 1))};
+    };
+    // A time step of 1/N s and a frame every K steps: exactly N/K frames a second, reduced.
+    for (long long n : {24, 30, 50, 60, 100, 120, 240, 1000}) {
+        for (long long every = 1; every <= 12; ++every) {
+            const std::string text = ffmpegRate(1.0 / ((1.0 / static_cast<double>(n)) * static_cast<double>(every)));
+            INFO("dt 1/" << n << " every " << every << ": " << text);
+            const auto [numerator, denominator] = parse(text);
+            const long long g = std::gcd(n, every);
+            CHECK(numerator == n / g);
+            CHECK(denominator == every / g);
         }
     }
+    // Any other rate: a fraction with a denominator of at most 1001, within 1/q^2 of it.
+    for (double rate : {29.97002997002997, 23.976, 12.5, 0.75, 7.3, 59.94, 1.0 / 0.0125 / 7}) {
+        const auto [numerator, denominator] = parse(ffmpegRate(rate));
+        INFO(rate << " -> " << numerator << "/" << denominator);
+        CHECK(denominator <= 1001);
+        CHECK(std::gcd(numerator, denominator) == 1);
+        CHECK(std::abs(static_cast<double>(numerator) / static_cast<double>(denominator) - rate) <=
+              1.0 / static_cast<double>(denominator * denominator));
+    }
+    CHECK(ffmpegRate(30000.0 / 1001.0) == "30000/1001");
 }

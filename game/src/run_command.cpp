@@ -73,10 +73,11 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
         out << "frames:           " << text << ", in " << options.out << '\n';
     }
     if (frames) {
-        out << recordingSummary(target, *frames);
-        const double frameRate = frames->wallSeconds > 0.0 ? static_cast<double>(std::max(frames->frames, frames->videoFrames)) / frames->wallSeconds : 0.0;
+        const std::int64_t drawn = std::max(frames->frames, frames->videoFrames);
+        const double frameRate = frames->wallSeconds > 0.0 ? static_cast<double>(drawn) / frames->wallSeconds : 0.0;
         std::snprintf(text, sizeof text, "%.1f fps (wall clock: simulate, render and write)", frameRate);
         out << "frame rate:       " << text << '\n';
+        out << recordingSummary(target, *frames);
     }
 }
 

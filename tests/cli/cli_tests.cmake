@@ -105,20 +105,49 @@ rube_cli_test("usage unknown option" "check|${RUBE_LEVELS}/bounce.toml|--fast" 2
 rube_cli_test("help" "--help" 0 "-DSTDOUT_MATCH=run .*check .*Exit status")
 rube_cli_test("help run" "run|--help" 0 "-DSTDOUT_MATCH=--steps .*--trace .*--method .*step,time,body,x,y,vx,vy,angle,omega,radius")
 rube_cli_test("help run explains frames" "run|--help" 0
-              "-DSTDOUT_MATCH=--out DIR .*--every K .*--frames N .*--size WxH .*--trails .*--debug-impacts .*frame_00000.png.*ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4")
+              "-DSTDOUT_MATCH=--out DIR .*--video FILE .*--every K .*--frames N .*--size WxH .*--trails .*--debug-impacts .*--gl NAME .*frame_00000.png.*apt-get install ffmpeg.*ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4")
 rube_cli_test("help check" "check|--help" 0 "-DSTDOUT_MATCH=file:line:col: message")
+
+# Issue 25: --gl and --video refusals are one line, status 2, before anything runs.
+rube_cli_test("run unknown --gl" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-bad|--gl|vulkan" 2
+              "-DSTDERR_LINE=rube: --gl: expected auto, egl or osmesa, got 'vulkan' (see 'rube run --help')")
+rube_cli_test("run --gl without frames" "run|${RUBE_LEVELS}/bounce.toml|--gl|egl" 2
+              "-DSTDERR_LINE=rube: --gl requires --out or --video (see 'rube run --help')")
+rube_cli_test("run --video of an unknown kind" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.avi" 2
+              "-DSTDERR_LINE=rube: --video: expected a file ending in .mp4, .webm or .gif, got '${RUBE_CLI_OUT}/bounce.avi' (see 'rube run --help')")
+rube_cli_test("run --video mp4 of odd size" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.mp4|--size|321x180" 2
+              "-DSTDERR_LINE=rube: --video ${RUBE_CLI_OUT}/bounce.mp4: H.264 (.mp4) needs an even width and height, got 321x180 (see 'rube run --help')")
+rube_cli_test("run --video with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.gif|--no-render" 2
+              "-DSTDERR_LINE=rube: --no-render excludes --video (see 'rube run --help')")
+rube_cli_test("run --video into a missing folder" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/no-such-folder/bounce.gif" 2
+              "-DSTDERR_LINE=rube run: cannot write ${RUBE_CLI_OUT}/no-such-folder/bounce.gif: ${RUBE_CLI_OUT}/no-such-folder is not a folder")
+if(NOT RUBE_OSMESA)
+  rube_cli_test("run --gl osmesa in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-osmesa|--gl|osmesa" 1
+                "-DSTDERR_LINE=rube run: cannot render: OSMesa: this rube was built without it (cmake -DRUBE_OSMESA=OFF); use --gl egl or --gl auto")
+endif()
+if(NOT RUBE_EGL)
+  rube_cli_test("run --gl egl in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-egl|--gl|egl" 1
+                "-DSTDERR_LINE=rube run: cannot render: EGL: this rube was built without it (cmake -DRUBE_EGL=OFF); use --gl osmesa or --gl auto")
+endif()
 
 # Determinism: two runs of the same scene write byte-identical traces and equal hashes.
 add_test(NAME "cli: same trace twice"
          COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DSTEPS=60
                  -DTRACE=${RUBE_CLI_OUT}/twice -P ${RUBE_CLI_DIR}/same_trace.cmake)
 
-# Rendering is deterministic: the same scene renders byte-identical PNGs twice, and with
-# llvmpipe on one thread (LP_NUM_THREADS=1) as on all of them. Named "screenshot: " so that
-# `ctest -R screenshot` runs it with the other tests that start a GL context.
-add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
-         COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
-                 -DOUT=${RUBE_CLI_OUT}/same-frames -P ${RUBE_CLI_DIR}/same_frames.cmake)
+# Rendering is deterministic: the same scene renders byte-identical PNGs twice, with llvmpipe on
+# one thread (LP_NUM_THREADS=1) as on all of them, and through EGL as through OSMesa when both
+# are built. Named "screenshot: " so that `ctest -R screenshot` runs it with the other tests that
+# start a GL context.
+if(RUBE_EGL AND RUBE_OSMESA)
+  add_test(NAME "screenshot: rube run frames are byte-identical twice, with LP_NUM_THREADS=1, and under EGL and OSMesa"
+           COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
+                   -DOUT=${RUBE_CLI_OUT}/same-frames -DGL=egl -DOTHER_GL=osmesa -P ${RUBE_CLI_DIR}/same_frames.cmake)
+else()
+  add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
+           COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
+                   -DOUT=${RUBE_CLI_OUT}/same-frames -DGL=$<IF:$<BOOL:${RUBE_EGL}>,egl,osmesa> -P ${RUBE_CLI_DIR}/same_frames.cmake)
+endif()
 
 # Levels: a solution reaches the goal (0), the level as it stands does not (1), a bad placement
 # is bad input (2) with the script's file:line:col.

@@ -65,6 +65,24 @@ std::string lastLine(const std::filesystem::path& log) {
     return last;
 }
 
+// A SIGKILLed run cannot clean up: its ffmpeg finishes the temporary file and it stays. The next
+// run writing the same video removes the temporaries of runs whose process is gone.
+void removeDeadRunsTemporaries(const std::filesystem::path& folder, const std::string& name) {
+    const std::string prefix = "." + name + ".";
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+        const std::string file = entry.path().filename().string();
+        if (!file.starts_with(prefix)) continue;
+        const std::string rest = file.substr(prefix.size());
+        const std::size_t dot = rest.find('.');
+        if (dot == std::string::npos || (rest.substr(dot) != ".part" && rest.substr(dot) != ".log")) continue;
+        const std::string digits = rest.substr(0, dot);
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+        const pid_t pid = static_cast<pid_t>(std::stol(digits));
+        if (::kill(pid, 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), error);
+    }
+}
+
 } // namespace
 
 std::optional<VideoFormat> videoFormatOf(const std::filesystem::path& file) {
@@ -96,18 +114,22 @@ std::filesystem::path findFfmpeg() {
 }
 
 std::string ffmpegRate(double framesPerSecond) {
-    // Thousandths, reduced: 60 -> "60", 29.97 -> "2997/100"; ffmpeg reads both exactly.
-    long long numerator = std::llround(framesPerSecond * 1000.0), denominator = 1000;
-    for (long long a = numerator, b = denominator; b != 0;) {
-        const long long r = a % b;
-        a = b;
-        b = r;
-        if (b == 0) {
-            numerator /= a;
-            denominator /= a;
-        }
+    // The continued fraction of the rate, up to the last convergent whose denominator is at most
+    // 1001 (NTSC's 30000/1001): 1 / (dt x K) for a dt of 1/N seconds comes out as N/K exactly,
+    // and a convergent p/q is within 1/q^2 of the rate.
+    long long p0 = 0, q0 = 1, p1 = 1, q1 = 0; // convergents p(k-2)/q(k-2), p(k-1)/q(k-1)
+    double x = framesPerSecond;
+    for (int k = 0; k < 64; ++k) {
+        const double a = std::floor(x);
+        const long long p2 = static_cast<long long>(a) * p1 + p0, q2 = static_cast<long long>(a) * q1 + q0;
+        if (q2 > 1001) break;
+        p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+        const double fraction = x - a;
+        // Close enough to exact: dt = 1/60 is not exactly representable, so 1/dt misses 60 by an ulp.
+        if (fraction < 1e-9 * x || std::abs(static_cast<double>(p1) / static_cast<double>(q1) - framesPerSecond) < 1e-9 * framesPerSecond) break;
+        x = 1.0 / fraction;
     }
-    return denominator == 1 ? std::to_string(numerator) : std::to_string(numerator) + "/" + std::to_string(denominator);
+    return q1 == 1 ? std::to_string(p1) : std::to_string(p1) + "/" + std::to_string(q1);
 }
 
 VideoWriter::VideoWriter(std::filesystem::path file, FrameSize size, double framesPerSecond)
@@ -127,6 +149,7 @@ VideoWriter::VideoWriter(std::filesystem::path file, FrameSize size, double fram
     hidden.append(file_.filename().string()).append(".").append(pid);
     temporary_ = folder / (hidden + ".part");
     log_ = folder / (hidden + ".log");
+    removeDeadRunsTemporaries(folder, file_.filename().string());
     const int log = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
     if (log < 0) throw std::runtime_error("cannot write " + file_.string() + ": " + errnoText(errno));
 

@@ -33,7 +33,8 @@ std::filesystem::path findFfmpeg();
 /// The one-line reason given when ffmpeg is missing: names the Debian package.
 inline constexpr std::string_view kFfmpegMissing = "ffmpeg is not installed (not found on PATH): apt-get install ffmpeg";
 
-/// "60" or "30000/1001": a frame rate as ffmpeg's -framerate reads it, exact to a thousandth.
+/// "60", "60/7" or "30000/1001": a frame rate as ffmpeg's -framerate reads it, the closest fraction
+/// with a denominator of at most 1001 (exact for 1 / (dt x K) when dt is 1/N seconds).
 std::string ffmpegRate(double framesPerSecond);
 
 /// Encodes one video. ffmpeg runs as a child process (spawned with an argument vector, no shell,

@@ -121,13 +121,28 @@ rube_cli_test("run --video with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--v
               "-DSTDERR_LINE=rube: --no-render excludes --video (see 'rube run --help')")
 rube_cli_test("run --video into a missing folder" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/no-such-folder/bounce.gif" 2
               "-DSTDERR_LINE=rube run: cannot write ${RUBE_CLI_OUT}/no-such-folder/bounce.gif: ${RUBE_CLI_OUT}/no-such-folder is not a folder")
+# EGL that cannot start (glvnd pointed at no vendor library, as on a machine without
+# libegl-mesa0): --gl egl says what it tried and what to install, in one line, exit 1; --gl auto
+# falls back to OSMesa and says so.
+if(RUBE_EGL)
+  rube_cli_test("run --gl egl without an EGL driver" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-no-egl|--frames|2|--gl|egl" 1
+                "-DSTDERR_LINE=rube run: cannot render: EGL: no display without a window system (tried EGL_EXT_platform_device (not offered), EGL_MESA_platform_surfaceless (not offered)): install libegl1, libegl-mesa0 and libgl1-mesa-dri")
+  set_tests_properties("cli: run --gl egl without an EGL driver" PROPERTIES ENVIRONMENT "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent")
+endif()
+if(RUBE_EGL AND RUBE_OSMESA)
+  rube_cli_test("run --gl auto without an EGL driver draws with OSMesa" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-auto-osmesa|--frames|2" 0
+                "-DSTDOUT_MATCH=\ngl: +osmesa .chosen by --gl auto.\n" -DSTDERR_EMPTY=ON)
+  set_tests_properties("cli: run --gl auto without an EGL driver draws with OSMesa" PROPERTIES ENVIRONMENT "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent")
+  rube_cli_test("run --gl auto draws with EGL where it starts" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-auto-egl|--frames|2" 0
+                "-DSTDOUT_MATCH=\ngl: +egl .chosen by --gl auto.\n")
+endif()
 if(NOT RUBE_OSMESA)
   rube_cli_test("run --gl osmesa in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-osmesa|--gl|osmesa" 1
-                "-DSTDERR_LINE=rube run: cannot render: OSMesa: this rube was built without it (cmake -DRUBE_OSMESA=OFF); use --gl egl or --gl auto")
+                "-DSTDERR_LINE=rube run: cannot render: OSMesa: this rube was built without it (cmake -DRUBE_OSMESA=OFF): use --gl egl or --gl auto")
 endif()
 if(NOT RUBE_EGL)
   rube_cli_test("run --gl egl in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-egl|--gl|egl" 1
-                "-DSTDERR_LINE=rube run: cannot render: EGL: this rube was built without it (cmake -DRUBE_EGL=OFF); use --gl osmesa or --gl auto")
+                "-DSTDERR_LINE=rube run: cannot render: EGL: this rube was built without it (cmake -DRUBE_EGL=OFF): use --gl osmesa or --gl auto")
 endif()
 
 # Determinism: two runs of the same scene write byte-identical traces and equal hashes.

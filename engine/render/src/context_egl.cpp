@@ -92,7 +92,7 @@ EGLDisplay openDisplay() {
         tried += std::string(before == 0 ? "" : ", ") + (open == softwareDeviceDisplay ? "EGL_MESA_device_software" : "EGL_MESA_platform_surfaceless") +
                  " (eglInitialize: " + eglErrorText() + ")";
     }
-    throw std::runtime_error("EGL: no display without a window system (tried " + tried + "); " + kInstallHint);
+    throw std::runtime_error("EGL: no display without a window system (tried " + tried + "): " + kInstallHint);
 }
 
 // Displays are shared by every context made from the same device, so the display is terminated
@@ -138,19 +138,19 @@ private:
         const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
         if (!hasExtension(extensions, "EGL_KHR_surfaceless_context")) {
             throw std::runtime_error(std::string("EGL: the display (") + vendor() +
-                                     ") cannot make a context current without a surface (no EGL_KHR_surfaceless_context); " +
+                                     ") cannot make a context current without a surface (no EGL_KHR_surfaceless_context): " +
                                      kInstallHint);
         }
         if (!eglBindAPI(EGL_OPENGL_API)) {
             throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") offers no desktop OpenGL (" + eglErrorText() +
-                                     "); " + kInstallHint);
+                                     "): " + kInstallHint);
         }
         // Any config that renders desktop GL: nothing is drawn to an EGL surface, only to the FBO.
         const EGLint configAttributes[] = {EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config = nullptr;
         EGLint configs = 0;
         if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1) {
-            throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") has no config for desktop OpenGL; " + kInstallHint);
+            throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") has no config for desktop OpenGL: " + kInstallHint);
         }
         const EGLint contextAttributes[] = {
             EGL_CONTEXT_MAJOR_VERSION, 3,
@@ -161,7 +161,7 @@ private:
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
         if (context_ == EGL_NO_CONTEXT) {
             throw std::runtime_error(std::string("EGL: no GL 3.3 core context on the display (") + vendor() + ", " + eglErrorText() +
-                                     "); install libgl1-mesa-dri (Mesa's llvmpipe)");
+                                     "): install libgl1-mesa-dri (Mesa's llvmpipe)");
         }
         makeCurrent();
         // glad keeps one global table of function pointers, loaded from the context made last.

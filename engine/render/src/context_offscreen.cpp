@@ -41,7 +41,7 @@ std::unique_ptr<RenderContext> create(GlBackend backend, FrameSize size) {
         const GlBackend other = backend == GlBackend::egl ? GlBackend::osmesa : GlBackend::egl;
         throw std::runtime_error(std::string(backend == GlBackend::egl ? "EGL" : "OSMesa") +
                                  ": this rube was built without it (cmake -DRUBE_" + (backend == GlBackend::egl ? "EGL" : "OSMESA") +
-                                 "=OFF); use --gl " + std::string(glBackendName(other)) + " or --gl auto");
+                                 "=OFF): use --gl " + std::string(glBackendName(other)) + " or --gl auto");
     }
 #if RUBE_HAVE_EGL
     if (backend == GlBackend::egl) return createEglContext(size);

@@ -194,7 +194,7 @@ private:
 };
 
 RunCommand::RunCommand(CLI::App& app) {
-    command_ = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
+    command_ = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames, a video and a CSV trace");
     command_->footer(kRunFooter);
     command_->add_option("scene", options_.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
     command_->add_option("--script", options_.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")

@@ -95,15 +95,14 @@ EGLDisplay openDisplay() {
     throw std::runtime_error("EGL: no display without a window system (tried " + tried + "): " + kInstallHint);
 }
 
-// Displays are shared by every context made from the same device, so the display is terminated
-// only when the last of this process's EGL contexts goes.
-int gLiveContexts = 0;
+// The display is never terminated: it is shared by every context made from the same device
+// (eglInitialize on it again is a no-op), and eglTerminate would unload Mesa's driver, whose state
+// then could not even be named by a leak checker. It lives until exit, as OSMesa's state does.
 
 class EglContext final : public RenderContext {
 public:
     explicit EglContext(FrameSize size) : size_(size) {
         display_ = openDisplay();
-        ++gLiveContexts;
         try {
             createContext();
             createFramebuffer();
@@ -201,7 +200,7 @@ private:
             eglDestroyContext(display_, context_);
             context_ = EGL_NO_CONTEXT;
         }
-        if (--gLiveContexts == 0) eglTerminate(display_);
+        eglReleaseThread();
     }
 
     FrameSize size_;

@@ -10,8 +10,8 @@
 int main(int argc, char** argv) {
     Catch::Session session;
     std::string gl;
-    session.cli(session.cli() |
-                Catch::clara::Opt(gl, "auto|egl|osmesa")["--gl"]("the offscreen GL back end the screenshot tests draw with"));
+    session.cli(session.cli() | Catch::clara::Opt(gl, "auto|egl|osmesa")["--gl"](
+                                    "the offscreen GL back end the screenshot tests draw with"));
     if (const int status = session.applyCommandLine(argc, argv); status != 0) return status;
     if (!gl.empty()) ::setenv("RUBE_TEST_GL", gl.c_str(), 1);
     return session.run();

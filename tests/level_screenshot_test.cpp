@@ -24,7 +24,8 @@ namespace {
 constexpr render::FrameSize kFrameSize{640, 360};
 
 render::Renderer& renderer() {
-    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize, rube::test::testGlBackend());
+    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize,
+                                                                                           rube::test::testGlBackend());
     static render::Renderer instance(*context);
     return instance;
 }

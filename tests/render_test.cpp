@@ -377,7 +377,8 @@ TEST_CASE("videos: the format follows the extension, H.264 refuses odd sides", "
 TEST_CASE("videos: the frame rate given to ffmpeg is 1 / (time step x every) as a reduced fraction", "[render]") {
     const auto parse = [](const std::string& text) {
         const std::size_t slash = text.find('/');
-        return std::pair{std::stoll(text.substr(0, slash)), slash == std::string::npos ? 1LL : std::stoll(text.substr(slash + 1))};
+        return std::pair{std::stoll(text.substr(0, slash)),
+                         slash == std::string::npos ? 1LL : std::stoll(text.substr(slash + 1))};
     };
     // A time step of 1/N s and a frame every K steps: exactly N/K frames a second, reduced.
     for (long long n : {24, 30, 50, 60, 100, 120, 240, 1000}) {

@@ -53,7 +53,8 @@ constexpr Golden kGoldens[] = {
 
 // One context and renderer for the whole executable: making a GL context costs more than a test.
 render::Renderer& renderer() {
-    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize, rube::test::testGlBackend());
+    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize,
+                                                                                           rube::test::testGlBackend());
     static render::Renderer instance(*context);
     return instance;
 }

@@ -75,7 +75,8 @@ void checkVideoPath(const std::filesystem::path& video) {
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))
         throw OutputFolderError("cannot write " + video.string() + ": " + folder.string() + " is not a folder");
-    if (std::filesystem::is_directory(video, error)) throw OutputFolderError("cannot write " + video.string() + ": it is a folder");
+    if (std::filesystem::is_directory(video, error))
+        throw OutputFolderError("cannot write " + video.string() + ": it is a folder");
     if (::access(folder.c_str(), W_OK) != 0)
         throw OutputFolderError("cannot write " + video.string() + ": " + std::strerror(errno));
 }
@@ -104,7 +105,8 @@ FrameRecorder::FrameRecorder(const RecordingTarget& target) : start_(std::chrono
     }
     context_ = render::createOffscreenContext(target.size, target.gl);
     renderer_ = std::make_unique<render::Renderer>(*context_);
-    if (!target.video.empty()) video_ = std::make_unique<render::VideoWriter>(target.video, target.size, target.framesPerSecond);
+    if (!target.video.empty())
+        video_ = std::make_unique<render::VideoWriter>(target.video, target.size, target.framesPerSecond);
     if (!folder.empty()) {
         staleFramesRemoved_ = removeFrames(folder);
         // An earlier level run's summary would otherwise sit beside these frames until this run's
@@ -192,12 +194,13 @@ std::unique_ptr<FrameRecorder> openFrameRecorder(const RecordingTarget& target, 
 }
 
 std::string recordingSummary(const RecordingTarget& target, const RecordingStats& stats) {
-    std::string text = "gl:               " + stats.gl + (target.gl == render::GlBackend::automatic ? " (chosen by --gl auto)" : "") + "\n";
+    std::string text = "gl:               " + stats.gl +
+                       (target.gl == render::GlBackend::automatic ? " (chosen by --gl auto)" : "") + "\n";
     if (!target.video.empty() && stats.videoFrames > 0) {
         char line[160];
-        std::snprintf(line, sizeof line, "%lld frames of %dx%d at %s fps, %lld bytes", static_cast<long long>(stats.videoFrames),
-                      target.size.width, target.size.height, render::ffmpegRate(target.framesPerSecond).c_str(),
-                      static_cast<long long>(stats.videoBytes));
+        std::snprintf(line, sizeof line, "%lld frames of %dx%d at %s fps, %lld bytes",
+                      static_cast<long long>(stats.videoFrames), target.size.width, target.size.height,
+                      render::ffmpegRate(target.framesPerSecond).c_str(), static_cast<long long>(stats.videoBytes));
         text += "video:            " + target.video.string() + " (" + line + ")\n";
     }
     return text;

@@ -41,11 +41,11 @@ std::int64_t removeFrames(const std::filesystem::path& folder);
 
 /// Where a run's frames go: PNGs in a folder, a video, or both (the same frames).
 struct RecordingTarget {
-    std::filesystem::path folder;                          ///< --out: frame_00000.png, ...; empty for no PNGs
-    std::filesystem::path video;                           ///< --video: .mp4, .webm or .gif; empty for none
-    render::FrameSize size{1280, 720};                     ///< pixels
-    render::GlBackend gl = render::GlBackend::automatic;   ///< --gl
-    double framesPerSecond = 60.0;                         ///< the video's rate: 1 / (time step x steps between frames)
+    std::filesystem::path folder;                        ///< --out: frame_00000.png, ...; empty for no PNGs
+    std::filesystem::path video;                         ///< --video: .mp4, .webm or .gif; empty for none
+    render::FrameSize size{1280, 720};                   ///< pixels
+    render::GlBackend gl = render::GlBackend::automatic; ///< --gl
+    double framesPerSecond = 60.0;                       ///< the video's rate: 1 / (time step x steps between frames)
 };
 
 /// What a recording produced, for the run summary.

@@ -194,7 +194,8 @@ private:
 };
 
 RunCommand::RunCommand(CLI::App& app) {
-    command_ = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames, a video and a CSV trace");
+    command_ = app.add_subcommand(
+        "run", "Simulate a scene and print a summary; optionally write PNG frames, a video and a CSV trace");
     command_->footer(kRunFooter);
     command_->add_option("scene", options_.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
     command_->add_option("--script", options_.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
@@ -212,8 +213,9 @@ RunCommand::RunCommand(CLI::App& app) {
     // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
     outOption_ = command_->add_option("--out", options_.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
                      ->type_name("DIR");
-    videoOption_ = command_->add_option("--video", options_.video,
-                                        "Write the frames as a video through ffmpeg: FILE.mp4, FILE.webm or FILE.gif")
+    videoOption_ = command_
+                       ->add_option("--video", options_.video,
+                                    "Write the frames as a video through ffmpeg: FILE.mp4, FILE.webm or FILE.gif")
                        ->type_name("FILE")
                        ->check(CLI::Validator(videoFileError, ""));
     everyOption_ = command_->add_option("--every", options_.every, "Steps between frames (default 1: every step)")
@@ -229,10 +231,12 @@ RunCommand::RunCommand(CLI::App& app) {
         everyOption_,
         framesOption_,
         sizeOption_,
-        command_->add_flag("--trails", options_.trails, "Draw each dynamic ball's path over the last 2 s (debug key D)"),
+        command_->add_flag("--trails", options_.trails,
+                           "Draw each dynamic ball's path over the last 2 s (debug key D)"),
         command_->add_flag("--debug-impacts", options_.debugImpacts,
                            "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
-        command_->add_option("--gl", gl_, "Offscreen GL: egl, osmesa or auto (default: EGL where it starts, else OSMesa)")
+        command_
+            ->add_option("--gl", gl_, "Offscreen GL: egl, osmesa or auto (default: EGL where it starts, else OSMesa)")
             ->type_name("NAME")
             ->check(CLI::Validator(glBackendError, "")),
     };
@@ -253,7 +257,8 @@ ExitCode RunCommand::run() {
     options_.sizeGiven = static_cast<bool>(*sizeOption_);
     options_.size = *parseFrameSize(size_); // the validator has accepted it, or it is the default
     if (*videoOption_) {
-        const std::string why = rube::render::videoSizeProblem(*rube::render::videoFormatOf(options_.video), options_.size);
+        const std::string why = rube::render::videoSizeProblem(*rube::render::videoFormatOf(options_.video),
+                                                               options_.size);
         if (!why.empty()) return usageError("--video " + options_.video + ": " + why, "rube run --help");
     }
     options_.progress = ::isatty(STDERR_FILENO) == 1;

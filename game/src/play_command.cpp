@@ -199,13 +199,15 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
     if (signal.empty() && !options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
     if (recorder && !options.out.empty())
-        out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
+        out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out
+            << "/summary.json)\n";
     if (recorder) out << recordingSummary(target, recorded);
     if (!signal.empty()) {
         // One line, not the expectations the cut-short run could not meet.
         out << "interrupted:      by " << signal << " at frame " << run.frame() << '\n';
         err << "rube run: interrupted by " << signal << " at frame " << run.frame()
-            << (recorder && !options.out.empty() ? "; " + std::to_string(framesWritten) + " frames written" : std::string())
+            << (recorder && !options.out.empty() ? "; " + std::to_string(framesWritten) + " frames written"
+                                                 : std::string())
             << (options.video.empty() ? "" : "; no video written") << '\n';
         return ExitCode::failed;
     }

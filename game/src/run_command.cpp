@@ -168,7 +168,8 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
     }
     const bool recording = drawsFrames(options);
     if (!recording && !options.noRender)
-        err << "rube run: note: no frames written without --out DIR or --video FILE (--no-render runs headless without this note)\n";
+        err << "rube run: note: no frames written without --out DIR or --video FILE (--no-render runs headless without "
+               "this note)\n";
 
     InterruptGuard guard; // from before the trace's temporary exists, so a SIGTERM cannot leave it behind
     TraceWriter trace;
@@ -187,7 +188,8 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
     Recording frames;
     if (recording) {
         ExitCode status = ExitCode::ok;
-        frames.target = {options.out, options.video, options.size, options.gl, 1.0 / (scene.world.timeStep * static_cast<double>(every))};
+        frames.target = {options.out, options.video, options.size, options.gl,
+                         1.0 / (scene.world.timeStep * static_cast<double>(every))};
         frames.recorder = openFrameRecorder(frames.target, err, "rube run", status);
         if (!frames.recorder) return status;
         ViewOptions viewOptions;

@@ -53,7 +53,8 @@ Options parse(int argc, char** argv) {
         } else if (arg == "--gl") {
             const std::string name = value();
             if (name == "all") options.backends.clear();
-            else if (const auto backend = glBackendFromName(name); backend && *backend != GlBackend::automatic) options.backends = {*backend};
+            else if (const auto backend = glBackendFromName(name); backend && *backend != GlBackend::automatic)
+                options.backends = {*backend};
             else throw std::runtime_error("--gl wants all, egl or osmesa");
         } else if (arg == "--out") options.out = value();
         else if (arg == "--keep") options.keep = true;
@@ -119,7 +120,8 @@ double cpuSeconds() {
 
 // Renders, reads back and writes options.frames frames through `backend` into `folder`, and prints
 // the figures under the back end's name.
-void bench(const Options& options, GlBackend backend, const std::vector<Ball>& balls, const std::filesystem::path& folder) {
+void bench(const Options& options, GlBackend backend, const std::vector<Ball>& balls,
+           const std::filesystem::path& folder) {
     auto context = createOffscreenContext(options.size, backend);
     Renderer renderer(*context);
     const Camera camera = Camera::fitting({{-16.0f, -9.0f}, {16.0f, 9.0f}}, options.size);
@@ -165,7 +167,8 @@ int main(int argc, char** argv) try {
     std::filesystem::path folder = options.out;
     if (folder.empty()) {
         std::string pattern = (std::filesystem::temp_directory_path() / "rube-render-bench-XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder: " + std::string(std::strerror(errno)));
+        if (::mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error("cannot make a temporary folder: " + std::string(std::strerror(errno)));
         folder = pattern;
     }
 

@@ -53,8 +53,10 @@ EGLDisplay softwareDeviceDisplay(std::string& tried) {
         return EGL_NO_DISPLAY;
     }
     auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-    auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-    auto platformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+        eglGetProcAddress("eglQueryDeviceStringEXT"));
+    auto platformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
     EGLDeviceEXT devices[16];
     EGLint count = 0;
     if (queryDevices == nullptr || queryDeviceString == nullptr || platformDisplay == nullptr ||
@@ -72,7 +74,8 @@ EGLDisplay softwareDeviceDisplay(std::string& tried) {
 
 EGLDisplay surfacelessDisplay(std::string& tried) {
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    auto platformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    auto platformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
     if (!hasExtension(client, "EGL_MESA_platform_surfaceless") || platformDisplay == nullptr) {
         tried += ", EGL_MESA_platform_surfaceless (not offered)";
         return EGL_NO_DISPLAY;
@@ -89,7 +92,8 @@ EGLDisplay openDisplay() {
         if (display == EGL_NO_DISPLAY) continue;
         EGLint major = 0, minor = 0;
         if (eglInitialize(display, &major, &minor)) return display;
-        tried += std::string(before == 0 ? "" : ", ") + (open == softwareDeviceDisplay ? "EGL_MESA_device_software" : "EGL_MESA_platform_surfaceless") +
+        tried += std::string(before == 0 ? "" : ", ") +
+                 (open == softwareDeviceDisplay ? "EGL_MESA_device_software" : "EGL_MESA_platform_surfaceless") +
                  " (eglInitialize: " + eglErrorText() + ")";
     }
     throw std::runtime_error("EGL: no display without a window system (tried " + tried + "): " + kInstallHint);
@@ -136,31 +140,34 @@ private:
     void createContext() {
         const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
         if (!hasExtension(extensions, "EGL_KHR_surfaceless_context")) {
-            throw std::runtime_error(std::string("EGL: the display (") + vendor() +
-                                     ") cannot make a context current without a surface (no EGL_KHR_surfaceless_context): " +
-                                     kInstallHint);
+            throw std::runtime_error(
+                std::string("EGL: the display (") + vendor() +
+                ") cannot make a context current without a surface (no EGL_KHR_surfaceless_context): " + kInstallHint);
         }
         if (!eglBindAPI(EGL_OPENGL_API)) {
-            throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") offers no desktop OpenGL (" + eglErrorText() +
-                                     "): " + kInstallHint);
+            throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") offers no desktop OpenGL (" +
+                                     eglErrorText() + "): " + kInstallHint);
         }
         // Any config that renders desktop GL: nothing is drawn to an EGL surface, only to the FBO.
         const EGLint configAttributes[] = {EGL_SURFACE_TYPE, 0, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config = nullptr;
         EGLint configs = 0;
         if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1) {
-            throw std::runtime_error(std::string("EGL: the display (") + vendor() + ") has no config for desktop OpenGL: " + kInstallHint);
+            throw std::runtime_error(std::string("EGL: the display (") + vendor() +
+                                     ") has no config for desktop OpenGL: " + kInstallHint);
         }
+        // clang-format off: name, value pairs
         const EGLint contextAttributes[] = {
             EGL_CONTEXT_MAJOR_VERSION, 3,
             EGL_CONTEXT_MINOR_VERSION, 3,
             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
             EGL_NONE,
         };
+        // clang-format on
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
         if (context_ == EGL_NO_CONTEXT) {
-            throw std::runtime_error(std::string("EGL: no GL 3.3 core context on the display (") + vendor() + ", " + eglErrorText() +
-                                     "): install libgl1-mesa-dri (Mesa's llvmpipe)");
+            throw std::runtime_error(std::string("EGL: no GL 3.3 core context on the display (") + vendor() + ", " +
+                                     eglErrorText() + "): install libgl1-mesa-dri (Mesa's llvmpipe)");
         }
         makeCurrent();
         // glad keeps one global table of function pointers, loaded from the context made last.
@@ -179,8 +186,8 @@ private:
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
         if (const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER); status != GL_FRAMEBUFFER_COMPLETE) {
             char text[96];
-            std::snprintf(text, sizeof text, "EGL: a %dx%d RGBA8 framebuffer is incomplete (status 0x%04x)", size_.width,
-                          size_.height, static_cast<unsigned>(status));
+            std::snprintf(text, sizeof text, "EGL: a %dx%d RGBA8 framebuffer is incomplete (status 0x%04x)",
+                          size_.width, size_.height, static_cast<unsigned>(status));
             throw std::runtime_error(text);
         }
     }
@@ -192,7 +199,8 @@ private:
 
     void release() {
         if (context_ != EGL_NO_CONTEXT) {
-            if (eglGetCurrentContext() == context_ || eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+            if (eglGetCurrentContext() == context_ ||
+                eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
                 if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
                 if (colour_ != 0) glDeleteRenderbuffers(1, &colour_);
             }

@@ -40,8 +40,9 @@ std::unique_ptr<RenderContext> create(GlBackend backend, FrameSize size) {
     if (!glBackendBuilt(backend)) {
         const GlBackend other = backend == GlBackend::egl ? GlBackend::osmesa : GlBackend::egl;
         throw std::runtime_error(std::string(backend == GlBackend::egl ? "EGL" : "OSMesa") +
-                                 ": this rube was built without it (cmake -DRUBE_" + (backend == GlBackend::egl ? "EGL" : "OSMESA") +
-                                 "=OFF): use --gl " + std::string(glBackendName(other)) + " or --gl auto");
+                                 ": this rube was built without it (cmake -DRUBE_" +
+                                 (backend == GlBackend::egl ? "EGL" : "OSMESA") + "=OFF): use --gl " +
+                                 std::string(glBackendName(other)) + " or --gl auto");
     }
 #if RUBE_HAVE_EGL
     if (backend == GlBackend::egl) return createEglContext(size);
@@ -56,8 +57,8 @@ std::unique_ptr<RenderContext> create(GlBackend backend, FrameSize size) {
 
 std::unique_ptr<RenderContext> createOffscreenContext(FrameSize size, GlBackend backend) {
     if (size.width <= 0 || size.height <= 0) {
-        throw std::invalid_argument("offscreen context: size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                                    " is empty");
+        throw std::invalid_argument("offscreen context: size " + std::to_string(size.width) + "x" +
+                                    std::to_string(size.height) + " is empty");
     }
     if (backend != GlBackend::automatic) return create(backend, size);
     // auto: EGL first (it outlives OSMesa), OSMesa if EGL cannot start; both reasons if neither can.

@@ -31,7 +31,8 @@ public:
         };
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
         if (context_ == nullptr) {
-            throw std::runtime_error("OSMesa could not create a GL 3.3 core context (install libosmesa6, Mesa's llvmpipe)");
+            throw std::runtime_error(
+                "OSMesa could not create a GL 3.3 core context (install libosmesa6, Mesa's llvmpipe)");
         }
         buffer_.resize(static_cast<std::size_t>(size.width) * size.height * 4);
         try {

@@ -28,7 +28,8 @@ namespace rube::render {
 namespace {
 
 std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return text;
 }
 
@@ -40,17 +41,22 @@ std::string errnoText(int error) { return std::strerror(error); }
 std::vector<std::string> encoderArguments(VideoFormat format) {
     switch (format) {
     case VideoFormat::mp4:
-        return {"-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4"};
+        return {"-c:v",     "libx264", "-preset",   "veryfast",   "-crf", "18",
+                "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f",   "mp4"};
     case VideoFormat::webm:
-        return {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-crf", "32", "-b:v", "0", "-pix_fmt", "yuv420p",
-                "-f", "webm"};
+        return {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8",  "-crf",
+                "32",   "-b:v",       "0",         "-pix_fmt", "yuv420p",   "-f", "webm"};
     case VideoFormat::gif:
         // One palette for the whole clip, made from every frame's colours (palettegen), then
         // applied without dithering, so flat fills stay flat and outlines keep clean edges.
         // palettegen sees the last frame before the first is written: ffmpeg holds the frames
         // until the input ends, so GIFs are for short clips.
-        return {"-filter_complex", "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
-                "-loop", "0", "-f", "gif"};
+        return {"-filter_complex",
+                "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=none",
+                "-loop",
+                "0",
+                "-f",
+                "gif"};
     }
     return {};
 }
@@ -77,7 +83,8 @@ void removeDeadRunsTemporaries(const std::filesystem::path& folder, const std::s
         const std::size_t dot = rest.find('.');
         if (dot == std::string::npos || (rest.substr(dot) != ".part" && rest.substr(dot) != ".log")) continue;
         const std::string digits = rest.substr(0, dot);
-        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9)
+            continue;
         const pid_t pid = static_cast<pid_t>(std::stol(digits));
         if (::kill(pid, 0) != 0 && errno == ESRCH) std::filesystem::remove(entry.path(), error);
     }
@@ -96,7 +103,8 @@ std::optional<VideoFormat> videoFormatOf(const std::filesystem::path& file) {
 std::string videoSizeProblem(VideoFormat format, FrameSize size) {
     // H.264 in 4:2:0 halves both chroma sides, and libx264 refuses odd ones rather than pad.
     if (format == VideoFormat::mp4 && (size.width % 2 != 0 || size.height % 2 != 0))
-        return "H.264 (.mp4) needs an even width and height, got " + std::to_string(size.width) + "x" + std::to_string(size.height);
+        return "H.264 (.mp4) needs an even width and height, got " + std::to_string(size.width) + "x" +
+               std::to_string(size.height);
     return "";
 }
 
@@ -126,7 +134,9 @@ std::string ffmpegRate(double framesPerSecond) {
         p0 = p1, q0 = q1, p1 = p2, q1 = q2;
         const double fraction = x - a;
         // Close enough to exact: dt = 1/60 is not exactly representable, so 1/dt misses 60 by an ulp.
-        if (fraction < 1e-9 * x || std::abs(static_cast<double>(p1) / static_cast<double>(q1) - framesPerSecond) < 1e-9 * framesPerSecond) break;
+        if (fraction < 1e-9 * x ||
+            std::abs(static_cast<double>(p1) / static_cast<double>(q1) - framesPerSecond) < 1e-9 * framesPerSecond)
+            break;
         x = 1.0 / fraction;
     }
     return q1 == 1 ? std::to_string(p1) : std::to_string(p1) + "/" + std::to_string(q1);
@@ -164,10 +174,21 @@ VideoWriter::VideoWriter(std::filesystem::path file, FrameSize size, double fram
     const int buffer = 4 << 20;
     ::setsockopt(sockets[0], SOL_SOCKET, SO_SNDBUF, &buffer, sizeof buffer);
 
-    std::vector<std::string> arguments = {ffmpeg.string(), "-hide_banner", "-loglevel", "error", "-y",
-                                          "-f", "rawvideo", "-pix_fmt", "rgb24",
-                                          "-video_size", std::to_string(size.width) + "x" + std::to_string(size.height),
-                                          "-framerate", ffmpegRate(framesPerSecond), "-i", "pipe:0"};
+    std::vector<std::string> arguments = {ffmpeg.string(),
+                                          "-hide_banner",
+                                          "-loglevel",
+                                          "error",
+                                          "-y",
+                                          "-f",
+                                          "rawvideo",
+                                          "-pix_fmt",
+                                          "rgb24",
+                                          "-video_size",
+                                          std::to_string(size.width) + "x" + std::to_string(size.height),
+                                          "-framerate",
+                                          ffmpegRate(framesPerSecond),
+                                          "-i",
+                                          "pipe:0"};
     for (std::string& a : encoderArguments(*format)) arguments.push_back(std::move(a));
     arguments.push_back(temporary_.string());
     std::vector<char*> argv;

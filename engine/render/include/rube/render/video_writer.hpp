@@ -31,7 +31,8 @@ std::string videoSizeProblem(VideoFormat format, FrameSize size);
 std::filesystem::path findFfmpeg();
 
 /// The one-line reason given when ffmpeg is missing: names the Debian package.
-inline constexpr std::string_view kFfmpegMissing = "ffmpeg is not installed (not found on PATH): apt-get install ffmpeg";
+inline constexpr std::string_view kFfmpegMissing =
+    "ffmpeg is not installed (not found on PATH): apt-get install ffmpeg";
 
 /// "60", "60/7" or "30000/1001": a frame rate as ffmpeg's -framerate reads it, the closest fraction
 /// with a denominator of at most 1001 (exact for 1 / (dt x K) when dt is 1/N seconds).

@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
-# The build the day Debian drops OSMesa (Mesa 25.1 removed it; issue 25): configures a second tree
+# The build the day Debian drops OSMesa (Mesa 25.1 removed it; issue 25): in a tree configured
 # with -DRUBE_OSMESA=OFF, builds only the renderer, rube and the test binaries that draw, and runs
 # the renderer's tests, every offscreen screenshot test, the rube run cli tests (--gl auto must
 # pick EGL, --gl osmesa must say it was not built) and the byte-identical frames check. Window
 # tests, sanitizers, fuzzing and the cross-compiler check stay with the main tree.
-# Built at -O0 without debug information, a third cheaper than -O2 (2026-11-25, 2-core machine:
-# 107 s of user CPU against 157 s for these targets): what is under test is the configuration,
-# and the physics gives the same bits at -O0 (cross_build.sh), so the same goldens must pass.
+# The tree is the cross-compiler check's g++ -O0 one (tests/determinism/cross_build.sh configures
+# it with -DRUBE_OSMESA=OFF and builds rube there first; CTest runs this test after it), so only
+# the test binaries are compiled here. Alone (the determinism test excluded) it configures the
+# tree itself, with the same arguments. The physics gives the same bits at -O0, so the same
+# goldens must pass.
 #
 # usage: run.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
 src=$1 work=$2
 start=$(date +%s)
-if [ ! -f "$work/CMakeCache.txt" ]; then
-  cmake -S "$src" -B "$work" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O0 -DCMAKE_C_FLAGS=-O0 -DRUBE_OSMESA=OFF >/dev/null
-fi
+# Testing on, on top of the cross-compiler check's configuration (which leaves it off): the
+# objects already built keep their flags and are not compiled again.
+cmake -S "$src" -B "$work" -DCMAKE_CXX_COMPILER=g++ -DCMAKE_BUILD_TYPE=Debug -DRUBE_OSMESA=OFF -DBUILD_TESTING=ON >/dev/null
 cmake --build "$work" -j2 --target rube render_tests screenshot_tests scene_screenshot_tests level_screenshot_tests >/dev/null
 built=$(date +%s)
 if grep -rqi "osmesa" "$work/engine/render/CMakeFiles/rube_render.dir/link.txt" "$work/game/CMakeFiles/rube.dir/link.txt"; then

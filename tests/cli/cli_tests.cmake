@@ -136,6 +136,8 @@ if(RUBE_EGL AND RUBE_OSMESA)
   rube_cli_test("run --gl auto draws with EGL where it starts" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-auto-egl|--frames|2" 0
                 "-DSTDOUT_MATCH=\ngl: +egl .chosen by --gl auto.\n")
 endif()
+rube_cli_test("level --video mp4 at a script's odd size" "run|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--script|${RUBE_CLI_DIR}/levels/ramp-odd-size.solution.toml|--video|${RUBE_CLI_OUT}/ramp-odd.mp4" 2
+              "-DSTDERR_LINE=rube run: cannot write ${RUBE_CLI_OUT}/ramp-odd.mp4: H.264 (.mp4) needs an even width and height, got 641x360")
 if(NOT RUBE_OSMESA)
   rube_cli_test("run --gl osmesa in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-osmesa|--gl|osmesa" 1
                 "-DSTDERR_LINE=rube run: cannot render: OSMesa: this rube was built without it (cmake -DRUBE_OSMESA=OFF): use --gl egl or --gl auto")

@@ -35,8 +35,8 @@ std::string hex16(std::uint64_t value) {
     return buffer;
 }
 
-// Everything a run with --out needs besides the world: the recorder, the view and one draw
-// list reused for every frame.
+// Everything a run with --out or --video needs besides the world: the target, the recorder,
+// the view and one draw list reused for every frame.
 struct Recording {
     RecordingTarget target;
     std::unique_ptr<FrameRecorder> recorder;

@@ -86,7 +86,7 @@ for signal in TERM INT; do
   video="$work/killed-$signal.mp4"
   "$rube" run "$scene" --video "$video" --steps 100000000 --size 320x180 >/dev/null 2>"$work/killed-$signal.err" &
   pid=$!
-  for _ in $(seq 1 100); do [ -n "$(find "$work" -name ".killed-$signal.mp4.*.part")" ] && break; sleep 0.1; done
+  for _ in $(seq 1 300); do [ -n "$(find "$work" -name ".killed-$signal.mp4.*.part")" ] && break; sleep 0.1; done
   sleep 0.5
   kill -"$signal" "$pid"
   wait "$pid"
@@ -101,7 +101,7 @@ done
 video="$work/killed-KILL.mp4"
 "$rube" run "$scene" --video "$video" --steps 100000000 --size 320x180 >/dev/null 2>&1 &
 pid=$!
-for _ in $(seq 1 100); do [ -n "$(find "$work" -name ".killed-KILL.mp4.*.part")" ] && break; sleep 0.1; done
+for _ in $(seq 1 300); do [ -n "$(find "$work" -name ".killed-KILL.mp4.*.part")" ] && break; sleep 0.1; done
 sleep 0.5
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null

@@ -5,6 +5,7 @@
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
 #include "script_file.hpp"
+#include "test_gl_backend.hpp"
 
 #include "rube/render/render_context.hpp"
 #include "rube/render/renderer.hpp"
@@ -24,7 +25,8 @@ namespace {
 constexpr render::FrameSize kFrameSize{640, 360};
 
 render::Renderer& renderer() {
-    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize);
+    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize,
+                                                                                           rube::test::testGlBackend());
     static render::Renderer instance(*context);
     return instance;
 }

@@ -8,6 +8,7 @@
 #include "rube/render/palette.hpp"
 #include "rube/render/render_context.hpp"
 #include "rube/render/screenshot.hpp"
+#include "rube/render/video_writer.hpp"
 
 #include "shape_instance.hpp" // internal: how a draw list becomes shader instances
 
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -340,4 +342,63 @@ TEST_CASE("contexts: bad requests fail with a reason, before any GL is touched",
     if (std::getenv("DISPLAY") == nullptr && std::getenv("WAYLAND_DISPLAY") == nullptr) {
         CHECK_THROWS_WITH(createWindowContext({320, 240}), Catch::Contains("GLFW"));
     }
+}
+
+TEST_CASE("GL back ends: names round-trip, and one not built is refused with how the build was made", "[render]") {
+    for (GlBackend backend : {GlBackend::automatic, GlBackend::egl, GlBackend::osmesa}) {
+        INFO(glBackendName(backend));
+        CHECK(glBackendFromName(glBackendName(backend)) == backend);
+        if (!glBackendBuilt(backend)) {
+            CHECK_THROWS_WITH(createOffscreenContext({64, 64}, backend), Catch::Contains("built without"));
+        }
+    }
+    CHECK((glBackendBuilt(GlBackend::egl) || glBackendBuilt(GlBackend::osmesa))); // CMake refuses a build with neither
+    for (const char* name : {"", "EGL", "gl", "auto ", "mesa"}) CHECK_FALSE(glBackendFromName(name));
+    // An empty size is refused before any back end is tried, whichever is asked for.
+    for (GlBackend backend : {GlBackend::automatic, GlBackend::egl, GlBackend::osmesa}) {
+        CHECK_THROWS_AS(createOffscreenContext({640, 0}, backend), std::invalid_argument);
+    }
+}
+
+TEST_CASE("videos: the format follows the extension, H.264 refuses odd sides", "[render]") {
+    CHECK(videoFormatOf("a/b.mp4") == VideoFormat::mp4);
+    CHECK(videoFormatOf("B.WebM") == VideoFormat::webm);
+    CHECK(videoFormatOf("c.gif") == VideoFormat::gif);
+    for (const char* name : {"d.avi", "mp4", "e.mp4.part", "f", ".gif.x"}) CHECK_FALSE(videoFormatOf(name));
+    for (int w = 1; w <= 8; ++w) {
+        for (int h = 1; h <= 8; ++h) {
+            CHECK(videoSizeProblem(VideoFormat::mp4, {w, h}).empty() == (w % 2 == 0 && h % 2 == 0));
+            CHECK(videoSizeProblem(VideoFormat::webm, {w, h}).empty());
+            CHECK(videoSizeProblem(VideoFormat::gif, {w, h}).empty());
+        }
+    }
+}
+
+TEST_CASE("videos: the frame rate given to ffmpeg is 1 / (time step x every) as a reduced fraction", "[render]") {
+    const auto parse = [](const std::string& text) {
+        const std::size_t slash = text.find('/');
+        return std::pair{std::stoll(text.substr(0, slash)),
+                         slash == std::string::npos ? 1LL : std::stoll(text.substr(slash + 1))};
+    };
+    // A time step of 1/N s and a frame every K steps: exactly N/K frames a second, reduced.
+    for (long long n : {24, 30, 50, 60, 100, 120, 240, 1000}) {
+        for (long long every = 1; every <= 12; ++every) {
+            const std::string text = ffmpegRate(1.0 / ((1.0 / static_cast<double>(n)) * static_cast<double>(every)));
+            INFO("dt 1/" << n << " every " << every << ": " << text);
+            const auto [numerator, denominator] = parse(text);
+            const long long g = std::gcd(n, every);
+            CHECK(numerator == n / g);
+            CHECK(denominator == every / g);
+        }
+    }
+    // Any other rate: a fraction with a denominator of at most 1001, within 1/q^2 of it.
+    for (double rate : {29.97002997002997, 23.976, 12.5, 0.75, 7.3, 59.94, 1.0 / 0.0125 / 7}) {
+        const auto [numerator, denominator] = parse(ffmpegRate(rate));
+        INFO(rate << " -> " << numerator << "/" << denominator);
+        CHECK(denominator <= 1001);
+        CHECK(std::gcd(numerator, denominator) == 1);
+        CHECK(std::abs(static_cast<double>(numerator) / static_cast<double>(denominator) - rate) <=
+              1.0 / static_cast<double>(denominator * denominator));
+    }
+    CHECK(ffmpegRate(30000.0 / 1001.0) == "30000/1001");
 }

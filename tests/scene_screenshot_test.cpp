@@ -6,6 +6,7 @@
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
 #include "scene_view.hpp"
+#include "test_gl_backend.hpp"
 
 #include "rube/render/render_context.hpp"
 #include "rube/render/renderer.hpp"
@@ -52,7 +53,8 @@ constexpr Golden kGoldens[] = {
 
 // One context and renderer for the whole executable: making a GL context costs more than a test.
 render::Renderer& renderer() {
-    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize);
+    static std::unique_ptr<render::RenderContext> context = render::createOffscreenContext(kFrameSize,
+                                                                                           rube::test::testGlBackend());
     static render::Renderer instance(*context);
     return instance;
 }

@@ -1,6 +1,6 @@
-// Screenshot tests: render a small fixed scene offscreen (OSMesa) and compare it with the golden
-// frame screenshots/render-basics_0000.png. These are the only renderer tests that need a GL
-// context; every CTest name here starts with "screenshot: ".
+// Screenshot tests: render a small fixed scene offscreen (EGL or OSMesa: test_gl_backend.hpp) and
+// compare it with the golden frame screenshots/render-basics_0000.png. These are the only renderer
+// tests that need a GL context; every CTest name here starts with "screenshot: ".
 // Regenerate the golden on purpose with UPDATE_SCREENSHOTS=1, then look at it before committing.
 #include "rube/render/draw_list.hpp"
 #include "rube/render/image_compare.hpp"
@@ -10,6 +10,7 @@
 #include "rube/render/screenshot.hpp"
 
 #include "render_basics.hpp"
+#include "test_gl_backend.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -29,7 +30,7 @@ const Rect sceneRect{{-8.0f, -4.5f}, {8.0f, 4.5f}};
 
 // One context and renderer for the whole executable: creating a GL context costs more than a test.
 Renderer& renderer() {
-    static std::unique_ptr<RenderContext> context = createOffscreenContext(frameSize);
+    static std::unique_ptr<RenderContext> context = createOffscreenContext(frameSize, rube::test::testGlBackend());
     static Renderer instance(*context);
     return instance;
 }
@@ -116,7 +117,7 @@ TEST_CASE("a rendered frame survives a PNG round trip exactly", "[render][screen
 TEST_CASE("a translucent polygon shows no seam along the diagonals inside it", "[render][screenshot]") {
     // One world unit per pixel, so the square's diagonals run exactly through pixel centres,
     // where the two triangles on either side tie: exactly one of them must draw each pixel.
-    std::unique_ptr<RenderContext> context = createOffscreenContext({64, 64});
+    std::unique_ptr<RenderContext> context = createOffscreenContext({64, 64}, rube::test::testGlBackend());
     Renderer small(*context);
     DrawList list;
     list.background = {0, 0, 0, 255};

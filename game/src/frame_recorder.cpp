@@ -3,9 +3,15 @@
 // and drawing, on the writer's worker thread.
 #include "frame_recorder.hpp"
 
+#include "run_interrupt.hpp"
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <string_view>
+
+#include <unistd.h>
 
 namespace rube::game {
 
@@ -56,41 +62,97 @@ std::string frameFileName(std::int64_t index) {
     return name;
 }
 
-FrameRecorder::FrameRecorder(const std::filesystem::path& folder, render::FrameSize size)
-    : start_(std::chrono::steady_clock::now()) {
-    // The writer would create the folder too; doing it here gives the plain reason ("Not a directory").
+namespace {
+
+// ffmpeg is not installed: the environment, not the input, so exit status 1 like a missing GL.
+struct FfmpegMissing : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The video's folder must exist and be writable before anything starts: bad input otherwise.
+void checkVideoPath(const std::filesystem::path& video) {
+    const std::filesystem::path folder = video.parent_path().empty() ? std::filesystem::path(".") : video.parent_path();
     std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw OutputFolderError("cannot write frames to " + folder.string() + ": " + error.message());
-    // Before anything in the folder is touched: two runs into one folder would mix their frames.
-    lock_ = std::make_unique<OutFolderLock>(folder);
-    if (!lock_->locked()) throw OutputFolderError(lock_->why());
-    try {
-        writer_ = std::make_unique<render::FrameWriter>(folder, kQueueDepth);
-    } catch (const std::exception& e) {
-        throw OutputFolderError("cannot write frames to " + folder.string() + ": " + e.what());
+    if (!std::filesystem::is_directory(folder, error))
+        throw OutputFolderError("cannot write " + video.string() + ": " + folder.string() + " is not a folder");
+    if (std::filesystem::is_directory(video, error))
+        throw OutputFolderError("cannot write " + video.string() + ": it is a folder");
+    if (::access(folder.c_str(), W_OK) != 0)
+        throw OutputFolderError("cannot write " + video.string() + ": " + std::strerror(errno));
+}
+
+} // namespace
+
+FrameRecorder::FrameRecorder(const RecordingTarget& target) : start_(std::chrono::steady_clock::now()) {
+    const std::filesystem::path& folder = target.folder;
+    if (!folder.empty()) {
+        // The writer would create the folder too; doing it here gives the plain reason ("Not a directory").
+        std::error_code error;
+        std::filesystem::create_directories(folder, error);
+        if (error) throw OutputFolderError("cannot write frames to " + folder.string() + ": " + error.message());
+        // Before anything in the folder is touched: two runs into one folder would mix their frames.
+        lock_ = std::make_unique<OutFolderLock>(folder);
+        if (!lock_->locked()) throw OutputFolderError(lock_->why());
+        try {
+            writer_ = std::make_unique<render::FrameWriter>(folder, kQueueDepth);
+        } catch (const std::exception& e) {
+            throw OutputFolderError("cannot write frames to " + folder.string() + ": " + e.what());
+        }
     }
-    context_ = render::createOffscreenContext(size);
+    if (!target.video.empty()) {
+        checkVideoPath(target.video);
+        // A level's script may set an odd size after the command line was checked.
+        const auto format = render::videoFormatOf(target.video);
+        if (!format) throw OutputFolderError("cannot write " + target.video.string() + ": a video ends in .mp4, .webm or .gif");
+        if (const std::string why = render::videoSizeProblem(*format, target.size); !why.empty())
+            throw OutputFolderError("cannot write " + target.video.string() + ": " + why);
+        if (render::findFfmpeg().empty()) throw FfmpegMissing(std::string(render::kFfmpegMissing));
+    }
+    context_ = render::createOffscreenContext(target.size, target.gl);
     renderer_ = std::make_unique<render::Renderer>(*context_);
-    staleFramesRemoved_ = removeFrames(folder);
-    // An earlier level run's summary would otherwise sit beside these frames until this run's
-    // replaced it, and for good if this run fails before writing its own.
-    std::filesystem::remove(folder / "summary.json", error);
+    if (!target.video.empty())
+        video_ = std::make_unique<render::VideoWriter>(target.video, target.size, target.framesPerSecond);
+    if (!folder.empty()) {
+        staleFramesRemoved_ = removeFrames(folder);
+        // An earlier level run's summary would otherwise sit beside these frames until this run's
+        // replaced it, and for good if this run fails before writing its own.
+        std::error_code error;
+        std::filesystem::remove(folder / "summary.json", error);
+    }
 }
 
 FrameRecorder::~FrameRecorder() = default;
 
 void FrameRecorder::record(const render::DrawList& list, const render::Camera& camera, std::int64_t index) {
     renderer_->draw(list, camera);
-    render::Image frame = writer_->spareImage();
+    // The video gets the very pixels the PNG gets: one readback, sent to ffmpeg, then queued.
+    render::Image frame = writer_ ? writer_->spareImage() : std::move(videoFrame_);
     renderer_->readPixels(frame);
-    writer_->write(std::move(frame), frameFileName(index));
+    if (video_) video_->write(frame);
+    if (writer_) writer_->write(std::move(frame), frameFileName(index));
+    else videoFrame_ = std::move(frame);
     ++queued_;
 }
 
 RecordingStats FrameRecorder::finish() {
-    writer_->finish();
-    return {writer_->framesWritten(), writer_->bytesWritten(), elapsedSeconds()};
+    RecordingStats stats;
+    stats.gl = std::string(context_->backendName());
+    if (video_) {
+        if (interrupted()) {
+            video_->abandon();
+        } else {
+            video_->finish();
+            stats.videoFrames = video_->frames();
+            stats.videoBytes = video_->bytes();
+        }
+    }
+    if (writer_) {
+        writer_->finish();
+        stats.frames = writer_->framesWritten();
+        stats.bytes = writer_->bytesWritten();
+    }
+    stats.wallSeconds = elapsedSeconds();
+    return stats;
 }
 
 double FrameRecorder::elapsedSeconds() const {
@@ -119,18 +181,34 @@ void ProgressLine::update(std::int64_t frames, double seconds) {
     out_ << line << std::flush;
 }
 
-std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
-                                                 std::ostream& err, std::string_view who, ExitCode& exitStatus) {
+std::unique_ptr<FrameRecorder> openFrameRecorder(const RecordingTarget& target, std::ostream& err, std::string_view who,
+                                                 ExitCode& exitStatus) {
     try {
-        return std::make_unique<FrameRecorder>(folder, size);
+        return std::make_unique<FrameRecorder>(target);
     } catch (const OutputFolderError& e) {
         err << who << ": " << e.what() << '\n';
         exitStatus = ExitCode::badInput;
+    } catch (const FfmpegMissing& e) {
+        err << who << ": --video: " << e.what() << '\n';
+        exitStatus = ExitCode::failed;
     } catch (const std::exception& e) {
         err << who << ": cannot render: " << e.what() << '\n';
         exitStatus = ExitCode::failed;
     }
     return nullptr;
+}
+
+std::string recordingSummary(const RecordingTarget& target, const RecordingStats& stats) {
+    std::string text = "gl:               " + stats.gl +
+                       (target.gl == render::GlBackend::automatic ? " (chosen by --gl auto)" : "") + "\n";
+    if (!target.video.empty() && stats.videoFrames > 0) {
+        char line[160];
+        std::snprintf(line, sizeof line, "%lld frames of %dx%d at %s fps, %lld bytes",
+                      static_cast<long long>(stats.videoFrames), target.size.width, target.size.height,
+                      render::ffmpegRate(target.framesPerSecond).c_str(), static_cast<long long>(stats.videoBytes));
+        text += "video:            " + target.video.string() + " (" + line + ")\n";
+    }
+    return text;
 }
 
 } // namespace rube::game

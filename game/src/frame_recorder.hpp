@@ -10,6 +10,7 @@
 #include "rube/render/frame_writer.hpp"
 #include "rube/render/render_context.hpp"
 #include "rube/render/renderer.hpp"
+#include "rube/render/video_writer.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -38,10 +39,22 @@ bool isFrameFileName(std::string_view name);
 /// on into the tail of a longer earlier run. Other files are left alone.
 std::int64_t removeFrames(const std::filesystem::path& folder);
 
+/// Where a run's frames go: PNGs in a folder, a video, or both (the same frames).
+struct RecordingTarget {
+    std::filesystem::path folder;                        ///< --out: frame_00000.png, ...; empty for no PNGs
+    std::filesystem::path video;                         ///< --video: .mp4, .webm or .gif; empty for none
+    render::FrameSize size{1280, 720};                   ///< pixels
+    render::GlBackend gl = render::GlBackend::automatic; ///< --gl
+    double framesPerSecond = 60.0;                       ///< the video's rate: 1 / (time step x steps between frames)
+};
+
 /// What a recording produced, for the run summary.
 struct RecordingStats {
     std::int64_t frames = 0;   ///< PNG files written
     std::int64_t bytes = 0;    ///< their total size
+    std::int64_t videoFrames = 0; ///< frames in the video (0 without one, or when it was abandoned)
+    std::int64_t videoBytes = 0;  ///< the video's size
+    std::string gl;               ///< the offscreen back end that drew: "egl" or "osmesa"
     double wallSeconds = 0.0;  ///< from the recorder's creation to the last file on disk
     /// Frames per second, end to end; 0 before anything was written.
     double framesPerSecond() const { return wallSeconds > 0.0 ? static_cast<double>(frames) / wallSeconds : 0.0; }
@@ -49,15 +62,18 @@ struct RecordingStats {
     double bytesPerFrame() const { return frames > 0 ? static_cast<double>(bytes) / static_cast<double>(frames) : 0.0; }
 };
 
-/// Records frames into one folder. The folder is checked first (OutputFolderError), then the GL
-/// context is made (std::runtime_error), so a bad --out costs no GL start-up and writes nothing.
+/// Records frames into one folder and/or a video. The folder is checked first (OutputFolderError),
+/// then ffmpeg's presence, then the GL context is made (std::runtime_error), and ffmpeg started
+/// last, so a bad --out costs no GL start-up and writes nothing.
 class FrameRecorder {
 public:
-    /// Frames of `size` into `folder`, created if missing and locked for this run's life
-    /// (OutputFolderError when another run holds it); the frames and summary.json of an earlier
-    /// run in it are removed once the folder and the GL context are known to work.
-    FrameRecorder(const std::filesystem::path& folder, render::FrameSize size);
-    /// Writes the frames still queued (errors then are lost: call finish() to see them).
+    /// Frames of `target.size` into `target.folder`, created if missing and locked for this run's
+    /// life (OutputFolderError when another run holds it; the frames and summary.json of an
+    /// earlier run in it are removed once the folder and the GL context are known to work), and
+    /// into `target.video` through ffmpeg.
+    explicit FrameRecorder(const RecordingTarget& target);
+    /// Writes the frames still queued (errors then are lost: call finish() to see them); a video
+    /// not finished is abandoned (nothing under its name).
     ~FrameRecorder();
     FrameRecorder(const FrameRecorder&) = delete;
     FrameRecorder& operator=(const FrameRecorder&) = delete;
@@ -65,7 +81,9 @@ public:
     /// Renders `list` through `camera` and queues it as frame number `index`; blocks only while
     /// the writer's queue is full. Throws the writer's first error (a full disk, say).
     void record(const render::DrawList& list, const render::Camera& camera, std::int64_t index);
-    /// Waits until every frame is on disk; throws the writer's first error.
+    /// Waits until every frame is on disk and the video is encoded and renamed into place; throws
+    /// the writer's first error or ffmpeg's failure. After SIGINT or SIGTERM (run_interrupt.hpp)
+    /// the video is abandoned instead: a cut-short run leaves no video under the final name.
     RecordingStats finish();
 
     /// Frames queued so far.
@@ -83,6 +101,8 @@ private:
     std::unique_ptr<render::FrameWriter> writer_;
     std::unique_ptr<render::RenderContext> context_;
     std::unique_ptr<render::Renderer> renderer_;
+    std::unique_ptr<render::VideoWriter> video_;
+    render::Image videoFrame_; // the frame read back when there are no PNGs to queue it for
     std::int64_t queued_ = 0;
     std::int64_t staleFramesRemoved_ = 0;
 };
@@ -110,9 +130,12 @@ private:
 };
 
 /// Opens a FrameRecorder for the command line: on failure says why in one line on `err` (after
-/// `who`, e.g. "rube run") and sets `exitStatus` to badInput for a folder that cannot be written
-/// or failed when no GL context can be made; returns null then.
-std::unique_ptr<FrameRecorder> openFrameRecorder(const std::filesystem::path& folder, render::FrameSize size,
-                                                 std::ostream& err, std::string_view who, ExitCode& exitStatus);
+/// `who`, e.g. "rube run") and sets `exitStatus` to badInput for a folder or video path that
+/// cannot be written, or failed when no GL context can be made or ffmpeg is missing; returns null then.
+std::unique_ptr<FrameRecorder> openFrameRecorder(const RecordingTarget& target, std::ostream& err, std::string_view who,
+                                                 ExitCode& exitStatus);
+
+/// The summary's lines about the recording ("gl:", "video:") for `stats` of `target`, each ending in a newline.
+std::string recordingSummary(const RecordingTarget& target, const RecordingStats& stats);
 
 } // namespace rube::game

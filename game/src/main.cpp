@@ -5,6 +5,8 @@
 #include "play_window.hpp"
 #include "run_command.hpp"
 
+#include "rube/render/video_writer.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -52,14 +54,20 @@ constexpr const char* kRunFooter =
     "  [world] bounds, else every body at the start with a margin. Dynamic balls are white,\n"
     "  kinematic bodies light grey, static ones dark grey; the top line shows scene, frame,\n"
     "  simulated time and method.\n"
-    "Video: rube run levels/physics/pool-break.toml --out out, then\n"
+    "Video: --video FILE.mp4 (H.264), .webm (VP9) or .gif (one palette made from the frames)\n"
+    "  pipes the frames --out would write, as raw RGB, to ffmpeg (apt-get install ffmpeg), at\n"
+    "  1 / (time step x K) frames a second: real time. The video appears under its name only\n"
+    "  when ffmpeg has finished; an interrupted or failed run leaves none. Or from PNGs:\n"
     "  ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4\n"
-    "  (60 frames a second is real time for a 1/60 s time step and --every 1).\n"
-    "Without --out and without --no-render, the run is headless with a note on stderr;\n"
+    "GL: --gl egl draws with EGL without a window system, --gl osmesa with Mesa's OSMesa (gone\n"
+    "  from Mesa 25.1), --gl auto (default) with EGL where it starts, else OSMesa; both are\n"
+    "  Mesa's llvmpipe on the CPU. The summary's gl: line names the one that drew.\n"
+    "Without --out or --video and without --no-render, the run is headless with a note on stderr;\n"
     "  --no-render never starts a GL context.\n"
     "A bad scene is reported by its first error only; 'rube check' lists them all.\n"
-    "Exit status: 0 done, 1 the run failed (trace or frame not written, no GL context,\n"
-    "  interrupted), 2 bad input (scene, options, trace or frame folder not creatable).";
+    "Exit status: 0 done, 1 the run failed (trace, frame or video not written, ffmpeg failed or\n"
+    "  missing, no GL context, interrupted), 2 bad input (scene, options, trace, frame folder or\n"
+    "  video not creatable).";
 
 constexpr const char* kCheckFooter =
     "Every error is one line, file:line:col: message, so editors can jump to it. Unknown keys are\n"
@@ -144,6 +152,16 @@ std::string frameSizeError(const std::string& text) {
     return "expected WxH in pixels, each from 1 to " + std::to_string(rube::game::kMaxFrameSide) + ", got '" + text + "'";
 }
 
+std::string videoFileError(const std::string& text) {
+    if (rube::render::videoFormatOf(text)) return {};
+    return "expected a file ending in .mp4, .webm or .gif, got '" + text + "'";
+}
+
+std::string glBackendError(const std::string& text) {
+    if (rube::render::glBackendFromName(text)) return {};
+    return "expected auto, egl or osmesa, got '" + text + "'";
+}
+
 // CLI11 keeps pointers to the fields it fills, so a command is made in place and never copied.
 class Command {
 public:
@@ -165,16 +183,19 @@ private:
     std::int64_t steps_ = 0;
     std::int64_t frames_ = 0;
     std::string size_ = "1280x720";
+    std::string gl_ = "auto";
     CLI::Option* stepsOption_ = nullptr;
     CLI::Option* outOption_ = nullptr;
+    CLI::Option* videoOption_ = nullptr;
     CLI::Option* everyOption_ = nullptr;
     CLI::Option* framesOption_ = nullptr;
     CLI::Option* sizeOption_ = nullptr;
-    std::vector<CLI::Option*> needOut_; // the options that only mean something with --out
+    std::vector<CLI::Option*> needOut_; // the options that only mean something with --out or --video
 };
 
 RunCommand::RunCommand(CLI::App& app) {
-    command_ = app.add_subcommand("run", "Simulate a scene and print a summary; optionally write PNG frames and a CSV trace");
+    command_ = app.add_subcommand(
+        "run", "Simulate a scene and print a summary; optionally write PNG frames, a video and a CSV trace");
     command_->footer(kRunFooter);
     command_->add_option("scene", options_.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
     command_->add_option("--script", options_.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
@@ -192,6 +213,11 @@ RunCommand::RunCommand(CLI::App& app) {
     // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
     outOption_ = command_->add_option("--out", options_.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
                      ->type_name("DIR");
+    videoOption_ = command_
+                       ->add_option("--video", options_.video,
+                                    "Write the frames as a video through ffmpeg: FILE.mp4, FILE.webm or FILE.gif")
+                       ->type_name("FILE")
+                       ->check(CLI::Validator(videoFileError, ""));
     everyOption_ = command_->add_option("--every", options_.every, "Steps between frames (default 1: every step)")
                        ->type_name("K")
                        ->check(countFromOne("steps"));
@@ -205,23 +231,36 @@ RunCommand::RunCommand(CLI::App& app) {
         everyOption_,
         framesOption_,
         sizeOption_,
-        command_->add_flag("--trails", options_.trails, "Draw each dynamic ball's path over the last 2 s (debug key D)"),
+        command_->add_flag("--trails", options_.trails,
+                           "Draw each dynamic ball's path over the last 2 s (debug key D)"),
         command_->add_flag("--debug-impacts", options_.debugImpacts,
                            "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
+        command_
+            ->add_option("--gl", gl_, "Offscreen GL: egl, osmesa or auto (default: EGL where it starts, else OSMesa)")
+            ->type_name("NAME")
+            ->check(CLI::Validator(glBackendError, "")),
     };
 }
 
 ExitCode RunCommand::run() {
     if (*outOption_ && options_.noRender) return usageError("--no-render excludes --out", "rube run --help");
+    if (*videoOption_ && options_.noRender) return usageError("--no-render excludes --video", "rube run --help");
     if (*outOption_ && options_.out.empty()) return usageError("--out: expected a folder, got ''", "rube run --help");
     for (const CLI::Option* option : needOut_) {
-        if (*option && !*outOption_) return usageError(option->get_name() + " requires --out", "rube run --help");
+        if (*option && !*outOption_ && !*videoOption_)
+            return usageError(option->get_name() + " requires --out or --video", "rube run --help");
     }
+    options_.gl = *rube::render::glBackendFromName(gl_); // the validator has accepted it, or it is the default
     if (*stepsOption_) options_.steps = steps_;
     if (*framesOption_) options_.frames = frames_;
     options_.everyGiven = static_cast<bool>(*everyOption_);
     options_.sizeGiven = static_cast<bool>(*sizeOption_);
     options_.size = *parseFrameSize(size_); // the validator has accepted it, or it is the default
+    if (*videoOption_) {
+        const std::string why = rube::render::videoSizeProblem(*rube::render::videoFormatOf(options_.video),
+                                                               options_.size);
+        if (!why.empty()) return usageError("--video " + options_.video + ": " + why, "rube run --help");
+    }
     options_.progress = ::isatty(STDERR_FILENO) == 1;
     return rube::game::runScene(options_, std::cout, std::cerr);
 }

@@ -134,9 +134,11 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     std::unique_ptr<LevelView> view;
     render::DrawList list;
     std::int64_t framesWritten = 0;
-    if (!options.out.empty()) {
+    const RecordingTarget target{options.out, options.video, size, options.gl, 1.0 / (dt * static_cast<double>(every))};
+    RecordingStats recorded;
+    if (drawsFrames(options)) {
         ExitCode status = ExitCode::ok;
-        recorder = openFrameRecorder(options.out, size, err, "rube run", status);
+        recorder = openFrameRecorder(target, err, "rube run", status);
         if (!recorder) return status;
         view = std::make_unique<LevelView>(level.name, sceneCamera(frameScene(level, run.world()), size), size);
     }
@@ -162,7 +164,7 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
             run.step();
             trace.writeState(run.world());
         }
-        if (recorder) recorder->finish();
+        if (recorder) recorded = recorder->finish();
     } catch (const std::exception& e) {
         err << "rube run: " << e.what() << '\n';
         return ExitCode::failed;
@@ -196,12 +198,17 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
     if (signal.empty() && !options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
-    if (recorder) out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out << "/summary.json)\n";
+    if (recorder && !options.out.empty())
+        out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out
+            << "/summary.json)\n";
+    if (recorder) out << recordingSummary(target, recorded);
     if (!signal.empty()) {
         // One line, not the expectations the cut-short run could not meet.
         out << "interrupted:      by " << signal << " at frame " << run.frame() << '\n';
         err << "rube run: interrupted by " << signal << " at frame " << run.frame()
-            << (recorder ? "; " + std::to_string(framesWritten) + " frames written" : std::string()) << '\n';
+            << (recorder && !options.out.empty() ? "; " + std::to_string(framesWritten) + " frames written"
+                                                 : std::string())
+            << (options.video.empty() ? "" : "; no video written") << '\n';
         return ExitCode::failed;
     }
     for (const std::string& failure : failures) err << failure << '\n';

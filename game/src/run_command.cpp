@@ -35,9 +35,10 @@ std::string hex16(std::uint64_t value) {
     return buffer;
 }
 
-// Everything a run with --out needs besides the world: the recorder, the view and one draw
-// list reused for every frame.
+// Everything a run with --out or --video needs besides the world: the target, the recorder,
+// the view and one draw list reused for every frame.
 struct Recording {
+    RecordingTarget target;
     std::unique_ptr<FrameRecorder> recorder;
     std::unique_ptr<SceneView> view;
     render::DrawList list;
@@ -46,7 +47,8 @@ struct Recording {
 };
 
 void printSummary(std::ostream& out, const SceneDesc& scene, const World& world, double physicsSeconds,
-                  const RunOptions& options, const TraceWriter& trace, const RecordingStats* frames) {
+                  const RunOptions& options, const TraceWriter& trace, const RecordingStats* frames,
+                  const RecordingTarget& target) {
     const StepStats& s = world.stats();
     char text[160];
     out << "scene:            " << scene.name << '\n';
@@ -64,13 +66,18 @@ void printSummary(std::ostream& out, const SceneDesc& scene, const World& world,
     out << "isolated bodies:  " << s.isolatedBodies << '\n';
     out << "state hash:       " << hex16(stateHash(world)) << '\n';
     if (!options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
-    if (frames) {
+    if (frames && !options.out.empty()) {
         std::snprintf(text, sizeof text, "%lld of %dx%d, %.0f bytes per frame on average",
                       static_cast<long long>(frames->frames), options.size.width, options.size.height,
                       frames->bytesPerFrame());
         out << "frames:           " << text << ", in " << options.out << '\n';
-        std::snprintf(text, sizeof text, "%.1f fps (wall clock: simulate, render and write)", frames->framesPerSecond());
+    }
+    if (frames) {
+        const std::int64_t drawn = std::max(frames->frames, frames->videoFrames);
+        const double frameRate = frames->wallSeconds > 0.0 ? static_cast<double>(drawn) / frames->wallSeconds : 0.0;
+        std::snprintf(text, sizeof text, "%.1f fps (wall clock: simulate, render and write)", frameRate);
         out << "frame rate:       " << text << '\n';
+        out << recordingSummary(target, *frames);
     }
 }
 
@@ -159,9 +166,10 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
             << " steps, more than the " << kMaxRunSteps << " a run may take" << '\n';
         return ExitCode::badInput;
     }
-    const bool recording = !options.out.empty();
+    const bool recording = drawsFrames(options);
     if (!recording && !options.noRender)
-        err << "rube run: note: no frames written without --out DIR (--no-render runs headless without this note)\n";
+        err << "rube run: note: no frames written without --out DIR or --video FILE (--no-render runs headless without "
+               "this note)\n";
 
     InterruptGuard guard; // from before the trace's temporary exists, so a SIGTERM cannot leave it behind
     TraceWriter trace;
@@ -180,7 +188,9 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
     Recording frames;
     if (recording) {
         ExitCode status = ExitCode::ok;
-        frames.recorder = openFrameRecorder(options.out, options.size, err, "rube run", status);
+        frames.target = {options.out, options.video, options.size, options.gl,
+                         1.0 / (scene.world.timeStep * static_cast<double>(every))};
+        frames.recorder = openFrameRecorder(frames.target, err, "rube run", status);
         if (!frames.recorder) return status;
         ViewOptions viewOptions;
         viewOptions.trails = options.trails;
@@ -226,11 +236,12 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
         RunOptions shown = options;
         shown.trace.clear(); // the summary must not name a trace that was discarded
         printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), shown, trace,
-                     recording ? &recorded : nullptr);
+                     recording ? &recorded : nullptr, frames.target);
         out << "interrupted:      by " << interruptingSignal() << " after " << world.stats().steps << " steps\n";
         err << "rube run: interrupted by " << interruptingSignal() << " after " << world.stats().steps << " steps; no trace written";
         // The frames already written stay: each is whole (written under a temporary name, then renamed).
-        if (recording) err << "; " << recorded.frames << " frames written";
+        if (!options.out.empty()) err << "; " << recorded.frames << " frames written";
+        if (!options.video.empty()) err << "; no video written";
         err << '\n';
         return ExitCode::failed;
     }
@@ -239,7 +250,7 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
         return ExitCode::failed;
     }
     printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), options, trace,
-                 recording ? &recorded : nullptr);
+                 recording ? &recorded : nullptr, frames.target);
     // Issue 27: a run whose physics went non-finite fails, whatever else it wrote.
     if (const std::string why = unstableStateMessage(world); !why.empty()) {
         err << "rube run: " << why << '\n';

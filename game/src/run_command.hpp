@@ -4,6 +4,7 @@
 #include "exit_codes.hpp"
 
 #include "rube/render/camera.hpp"
+#include "rube/render/render_context.hpp"
 
 #include <cstdint>
 #include <iosfwd>
@@ -35,6 +36,8 @@ struct RunOptions {
     std::string trace;                 ///< --trace file, empty for none
     std::string method;                ///< --method, empty for the scene's own
     std::string out;                   ///< --out folder for frame_00000.png, ...; empty for no frames
+    std::string video;                 ///< --video FILE (.mp4, .webm, .gif) through ffmpeg; empty for none
+    render::GlBackend gl = render::GlBackend::automatic; ///< --gl: the offscreen back end that draws the frames
     std::int64_t every = 1;            ///< --every: steps between frames
     std::optional<std::int64_t> frames; ///< --frames: how many frames at most, frame 0 included
     render::FrameSize size{1280, 720}; ///< --size, pixels
@@ -42,6 +45,9 @@ struct RunOptions {
     bool debugImpacts = false;         ///< --debug-impacts: points of impact and collision normals
     bool progress = false;             ///< show a progress line on `err` (only when it is a terminal)
 };
+
+/// Whether the run draws frames at all (--out or --video).
+inline bool drawsFrames(const RunOptions& options) { return !options.out.empty() || !options.video.empty(); }
 
 /// The largest frame side --size accepts, in pixels: 8192 x 8192 RGBA is already 256 MB.
 inline constexpr int kMaxFrameSide = 8192;

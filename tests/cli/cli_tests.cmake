@@ -48,7 +48,7 @@ rube_cli_test("run steps from duration" "run|${RUBE_LEVELS}/projectile.toml|--no
 rube_cli_test("run method override" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--steps|3|--method|discrete" 0
               "-DSTDOUT_MATCH=method: +discrete\n")
 rube_cli_test("run without --out or --no-render notes it" "run|${RUBE_LEVELS}/bounce.toml|--steps|1" 0
-              "-DSTDERR_LINE=rube run: note: no frames written without --out DIR (--no-render runs headless without this note)")
+              "-DSTDERR_LINE=rube run: note: no frames written without --out DIR or --video FILE (--no-render runs headless without this note)")
 
 # Frames: --out DIR writes frame_00000.png (the initial state) and one frame every --every steps.
 # Small frames keep these quick; the pictures themselves are the screenshot tests' business.
@@ -79,7 +79,7 @@ rube_cli_test("usage bad every" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/
 rube_cli_test("usage --out with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--out|${frames}/x" 2
               "-DSTDERR_LINE=rube: --no-render excludes --out (see 'rube run --help')")
 rube_cli_test("usage --trails without --out" "run|${RUBE_LEVELS}/bounce.toml|--trails" 2
-              "-DSTDERR_LINE=rube: --trails requires --out (see 'rube run --help')")
+              "-DSTDERR_LINE=rube: --trails requires --out or --video (see 'rube run --help')")
 
 # Failed runs: status 2, one line, and no trace (nor a temporary) left behind.
 rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-key.toml|--no-render|--trace|${RUBE_CLI_OUT}/bad.csv" 2
@@ -105,20 +105,66 @@ rube_cli_test("usage unknown option" "check|${RUBE_LEVELS}/bounce.toml|--fast" 2
 rube_cli_test("help" "--help" 0 "-DSTDOUT_MATCH=run .*check .*Exit status")
 rube_cli_test("help run" "run|--help" 0 "-DSTDOUT_MATCH=--steps .*--trace .*--method .*step,time,body,x,y,vx,vy,angle,omega,radius")
 rube_cli_test("help run explains frames" "run|--help" 0
-              "-DSTDOUT_MATCH=--out DIR .*--every K .*--frames N .*--size WxH .*--trails .*--debug-impacts .*frame_00000.png.*ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4")
+              "-DSTDOUT_MATCH=--out DIR .*--video FILE .*--every K .*--frames N .*--size WxH .*--trails .*--debug-impacts .*--gl NAME .*frame_00000.png.*apt-get install ffmpeg.*ffmpeg -framerate 60 -i out/frame_%05d.png -pix_fmt yuv420p out.mp4")
 rube_cli_test("help check" "check|--help" 0 "-DSTDOUT_MATCH=file:line:col: message")
+
+# Issue 25: --gl and --video refusals are one line, status 2, before anything runs.
+rube_cli_test("run unknown --gl" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-bad|--gl|vulkan" 2
+              "-DSTDERR_LINE=rube: --gl: expected auto, egl or osmesa, got 'vulkan' (see 'rube run --help')")
+rube_cli_test("run --gl without frames" "run|${RUBE_LEVELS}/bounce.toml|--gl|egl" 2
+              "-DSTDERR_LINE=rube: --gl requires --out or --video (see 'rube run --help')")
+rube_cli_test("run --video of an unknown kind" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.avi" 2
+              "-DSTDERR_LINE=rube: --video: expected a file ending in .mp4, .webm or .gif, got '${RUBE_CLI_OUT}/bounce.avi' (see 'rube run --help')")
+rube_cli_test("run --video mp4 of odd size" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.mp4|--size|321x180" 2
+              "-DSTDERR_LINE=rube: --video ${RUBE_CLI_OUT}/bounce.mp4: H.264 (.mp4) needs an even width and height, got 321x180 (see 'rube run --help')")
+rube_cli_test("run --video with --no-render" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/bounce.gif|--no-render" 2
+              "-DSTDERR_LINE=rube: --no-render excludes --video (see 'rube run --help')")
+rube_cli_test("run --video into a missing folder" "run|${RUBE_LEVELS}/bounce.toml|--video|${RUBE_CLI_OUT}/no-such-folder/bounce.gif" 2
+              "-DSTDERR_LINE=rube run: cannot write ${RUBE_CLI_OUT}/no-such-folder/bounce.gif: ${RUBE_CLI_OUT}/no-such-folder is not a folder")
+# EGL that cannot start (glvnd pointed at no vendor library, as on a machine without
+# libegl-mesa0): --gl egl says what it tried and what to install, in one line, exit 1; --gl auto
+# falls back to OSMesa and says so.
+if(RUBE_EGL)
+  rube_cli_test("run --gl egl without an EGL driver" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-no-egl|--frames|2|--gl|egl" 1
+                "-DSTDERR_LINE=rube run: cannot render: EGL: no display without a window system (tried EGL_EXT_platform_device (not offered), EGL_MESA_platform_surfaceless (not offered)): install libegl1, libegl-mesa0 and libgl1-mesa-dri")
+  set_tests_properties("cli: run --gl egl without an EGL driver" PROPERTIES ENVIRONMENT "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent")
+endif()
+if(RUBE_EGL AND RUBE_OSMESA)
+  rube_cli_test("run --gl auto without an EGL driver draws with OSMesa" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-auto-osmesa|--frames|2" 0
+                "-DSTDOUT_MATCH=\ngl: +osmesa .chosen by --gl auto.\n" -DSTDERR_EMPTY=ON)
+  set_tests_properties("cli: run --gl auto without an EGL driver draws with OSMesa" PROPERTIES ENVIRONMENT "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent")
+  rube_cli_test("run --gl auto draws with EGL where it starts" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-auto-egl|--frames|2" 0
+                "-DSTDOUT_MATCH=\ngl: +egl .chosen by --gl auto.\n")
+endif()
+rube_cli_test("level --video mp4 at a script's odd size" "run|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--script|${RUBE_CLI_DIR}/levels/ramp-odd-size.solution.toml|--video|${RUBE_CLI_OUT}/ramp-odd.mp4" 2
+              "-DSTDERR_LINE=rube run: cannot write ${RUBE_CLI_OUT}/ramp-odd.mp4: H.264 (.mp4) needs an even width and height, got 641x360")
+if(NOT RUBE_OSMESA)
+  rube_cli_test("run --gl osmesa in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-osmesa|--gl|osmesa" 1
+                "-DSTDERR_LINE=rube run: cannot render: OSMesa: this rube was built without it (cmake -DRUBE_OSMESA=OFF): use --gl egl or --gl auto")
+endif()
+if(NOT RUBE_EGL)
+  rube_cli_test("run --gl egl in a build without it" "run|${RUBE_LEVELS}/bounce.toml|--out|${RUBE_CLI_OUT}/gl-egl|--gl|egl" 1
+                "-DSTDERR_LINE=rube run: cannot render: EGL: this rube was built without it (cmake -DRUBE_EGL=OFF): use --gl osmesa or --gl auto")
+endif()
 
 # Determinism: two runs of the same scene write byte-identical traces and equal hashes.
 add_test(NAME "cli: same trace twice"
          COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DSTEPS=60
                  -DTRACE=${RUBE_CLI_OUT}/twice -P ${RUBE_CLI_DIR}/same_trace.cmake)
 
-# Rendering is deterministic: the same scene renders byte-identical PNGs twice, and with
-# llvmpipe on one thread (LP_NUM_THREADS=1) as on all of them. Named "screenshot: " so that
-# `ctest -R screenshot` runs it with the other tests that start a GL context.
-add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
-         COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
-                 -DOUT=${RUBE_CLI_OUT}/same-frames -P ${RUBE_CLI_DIR}/same_frames.cmake)
+# Rendering is deterministic: the same scene renders byte-identical PNGs twice, with llvmpipe on
+# one thread (LP_NUM_THREADS=1) as on all of them, and through EGL as through OSMesa when both
+# are built. Named "screenshot: " so that `ctest -R screenshot` runs it with the other tests that
+# start a GL context.
+if(RUBE_EGL AND RUBE_OSMESA)
+  add_test(NAME "screenshot: rube run frames are byte-identical twice, with LP_NUM_THREADS=1, and under EGL and OSMesa"
+           COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
+                   -DOUT=${RUBE_CLI_OUT}/same-frames -DGL=egl -DOTHER_GL=osmesa -P ${RUBE_CLI_DIR}/same_frames.cmake)
+else()
+  add_test(NAME "screenshot: rube run frames are byte-identical twice and with LP_NUM_THREADS=1"
+           COMMAND ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> -DSCENE=${RUBE_LEVELS}/pool-break.toml -DFRAMES=40
+                   -DOUT=${RUBE_CLI_OUT}/same-frames -DGL=$<IF:$<BOOL:${RUBE_EGL}>,egl,osmesa> -P ${RUBE_CLI_DIR}/same_frames.cmake)
+endif()
 
 # Levels: a solution reaches the goal (0), the level as it stands does not (1), a bad placement
 # is bad input (2) with the script's file:line:col.

@@ -2,7 +2,8 @@
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer: configures a second
 # build tree beside the main one with -fsanitize=address,undefined (any error aborts the test that
 # hit it), builds it, and runs its CTest. Left out: the tests that build yet more trees (the
-# cross-compiler determinism test, the fuzz smoke run, this test itself) and the bench (a speed run).
+# cross-compiler determinism test, the fuzz smoke run, the no-OSMesa build, this test itself) and
+# the bench (a speed run).
 #
 # usage: run.sh SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -19,7 +20,7 @@ cmake --build "$work" -j2 >/dev/null
 export LSAN_OPTIONS="suppressions=$src/tests/sanitizers/lsan.supp:print_suppressions=0"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir "$work" -j2 --output-on-failure -E "^(determinism: traces|sanitizers|fuzz|bench|screenshot: window)"
+ctest --test-dir "$work" -j2 --output-on-failure -E "^(determinism: traces|sanitizers|fuzz|bench|no-osmesa|screenshot: window)"
 # The window test loads Mesa's DRI driver through GLX, which is unloaded before exit: LeakSanitizer
 # then cannot name the module its allocations came from, so a suppression cannot match them. It
 # runs with every other check on and leak detection off.

@@ -1,8 +1,10 @@
 // render_bench: end-to-end cost of recording a game's frames. Renders 1280x720 frames of ~50
 // moving circles offscreen, reads each back and hands it to the asynchronous PNG writer, then
 // prints frames per second and bytes per frame. Not a test: the figures depend on the machine.
+// Each offscreen back end built (EGL, OSMesa) is measured in turn in the same run, on the same
+// frames, so their figures compare (issue 25); --gl egl or --gl osmesa measures one.
 //
-// Usage: render_bench [--frames N] [--circles N] [--size WxH] [--out DIR] [--keep]
+// Usage: render_bench [--frames N] [--circles N] [--size WxH] [--gl all|egl|osmesa] [--out DIR] [--keep]
 #include "rube/render/draw_list.hpp"
 #include "rube/render/frame_writer.hpp"
 #include "rube/render/palette.hpp"
@@ -32,6 +34,7 @@ struct Options {
     FrameSize size{1280, 720};
     std::filesystem::path out;
     bool keep = false;
+    std::vector<GlBackend> backends; // empty: every back end built
 };
 
 Options parse(int argc, char** argv) {
@@ -47,6 +50,12 @@ Options parse(int argc, char** argv) {
         else if (arg == "--size") {
             std::string v = value();
             if (std::sscanf(v.c_str(), "%dx%d", &options.size.width, &options.size.height) != 2) throw std::runtime_error("--size wants WxH");
+        } else if (arg == "--gl") {
+            const std::string name = value();
+            if (name == "all") options.backends.clear();
+            else if (const auto backend = glBackendFromName(name); backend && *backend != GlBackend::automatic)
+                options.backends = {*backend};
+            else throw std::runtime_error("--gl wants all, egl or osmesa");
         } else if (arg == "--out") options.out = value();
         else if (arg == "--keep") options.keep = true;
         else throw std::runtime_error("unknown argument " + arg + " (see the comment at the top of render_bench.cpp)");
@@ -109,27 +118,11 @@ double cpuSeconds() {
            static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
 }
 
-} // namespace
-
-int main(int argc, char** argv) try {
-    Options options = parse(argc, argv);
-    std::filesystem::path folder = options.out;
-    if (folder.empty()) {
-        std::string pattern = (std::filesystem::temp_directory_path() / "rube-render-bench-XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder: " + std::string(std::strerror(errno)));
-        folder = pattern;
-    }
-
-    std::vector<Ball> balls;
-    std::srand(1); // the same scene on every run
-    for (int i = 0; i < options.circles; ++i) {
-        auto uniform = [] { return static_cast<float>(std::rand()) / static_cast<float>(RAND_MAX); };
-        balls.push_back({{-14.0f + 28.0f * uniform(), -7.0f + 14.0f * uniform()},
-                         {-6.0f + 12.0f * uniform(), -6.0f + 12.0f * uniform()},
-                         0.3f + 0.5f * uniform()});
-    }
-
-    auto context = createOffscreenContext(options.size);
+// Renders, reads back and writes options.frames frames through `backend` into `folder`, and prints
+// the figures under the back end's name.
+void bench(const Options& options, GlBackend backend, const std::vector<Ball>& balls,
+           const std::filesystem::path& folder) {
+    auto context = createOffscreenContext(options.size, backend);
     Renderer renderer(*context);
     const Camera camera = Camera::fitting({{-16.0f, -9.0f}, {16.0f, 9.0f}}, options.size);
     DrawList list;
@@ -156,15 +149,45 @@ int main(int argc, char** argv) try {
     double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     double cpuPerFrame = (cpuSeconds() - cpuStart) / options.frames;
 
-    std::printf("render_bench: %d frames %dx%d, %d circles (%zu instances, %d draw call per frame)\n", options.frames,
-                options.size.width, options.size.height, options.circles, renderer.lastStats().instances,
-                renderer.lastStats().drawCalls);
+    std::printf("render_bench [%s]: %d frames %dx%d, %d circles (%zu instances, %d draw call per frame)\n",
+                std::string(context->backendName()).c_str(), options.frames, options.size.width, options.size.height,
+                options.circles, renderer.lastStats().instances, renderer.lastStats().drawCalls);
     std::printf("  end to end      %.1f fps (%.2f s)\n", options.frames / seconds, seconds);
     std::printf("  render+readback %.2f ms per frame (main thread)\n", 1000.0 * renderSeconds / options.frames);
     std::printf("  cpu             %.2f ms per frame (all threads)\n", 1000.0 * cpuPerFrame);
     std::printf("  PNG             %.0f bytes per frame (%lld frames written)\n",
                 static_cast<double>(writer.bytesWritten()) / static_cast<double>(writer.framesWritten()),
                 static_cast<long long>(writer.framesWritten()));
+}
+
+} // namespace
+
+int main(int argc, char** argv) try {
+    Options options = parse(argc, argv);
+    std::filesystem::path folder = options.out;
+    if (folder.empty()) {
+        std::string pattern = (std::filesystem::temp_directory_path() / "rube-render-bench-XXXXXX").string();
+        if (::mkdtemp(pattern.data()) == nullptr)
+            throw std::runtime_error("cannot make a temporary folder: " + std::string(std::strerror(errno)));
+        folder = pattern;
+    }
+
+    std::vector<Ball> balls;
+    std::srand(1); // the same scene on every run
+    for (int i = 0; i < options.circles; ++i) {
+        auto uniform = [] { return static_cast<float>(std::rand()) / static_cast<float>(RAND_MAX); };
+        balls.push_back({{-14.0f + 28.0f * uniform(), -7.0f + 14.0f * uniform()},
+                         {-6.0f + 12.0f * uniform(), -6.0f + 12.0f * uniform()},
+                         0.3f + 0.5f * uniform()});
+    }
+
+    std::vector<GlBackend> backends = options.backends;
+    if (backends.empty()) {
+        for (GlBackend backend : {GlBackend::egl, GlBackend::osmesa})
+            if (glBackendBuilt(backend)) backends.push_back(backend);
+    }
+    // One back end at a time: glad's function table is global, and each context loads its own.
+    for (GlBackend backend : backends) bench(options, backend, balls, folder / std::string(glBackendName(backend)));
     std::printf("  frames in       %s%s\n", folder.string().c_str(), options.keep || !options.out.empty() ? "" : " (removed)");
     if (!options.keep && options.out.empty()) std::filesystem::remove_all(folder);
     return 0;

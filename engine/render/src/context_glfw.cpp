@@ -116,6 +116,8 @@ public:
         glfwPollEvents();
     }
 
+    std::string_view backendName() const override { return "glfw"; }
+
     bool closeRequested() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 
     void setInputListener(InputListener* listener) override { listener_ = listener; }

@@ -122,9 +122,10 @@ std::string partCatalogueMarkdown(const std::string& pictureFolder) {
         "     ./build/rube items --sheet game/items -->\n\n"
         "Every kind of part a level or a script may use, in the order messages list them: what it is, what an item of it\n"
         "is at its defaults (measured from the bodies the game makes for it), and its `[[item]]` keys. `rube items`\n"
-        "prints the same; `rube items --sheet DIR` draws the pictures. A part placed from the inventory (`[[place]]` in a\n"
-        "script, or the mouse in `rube play`) takes its position, and its angle when it turns; every other key keeps the\n"
-        "default below. Keys and their syntax: [scene-format.md](scene-format.md).\n";
+        "prints the same; `rube items --sheet DIR` draws the pictures. A part placed with the mouse in `rube play` takes\n"
+        "its position, and its angle when it turns; every other key keeps the default below. A script's `[[place]]` may\n"
+        "also give the kind's own keys (a plank's `length`, a bomb's `trigger` and `fuse`). Keys and their syntax:\n"
+        "[scene-format.md](scene-format.md).\n";
     for (ItemKind kind : allPartKinds()) {
         const std::string name(kind->name());
         out += "\n## " + name + "\n\n![" + name + "](" + pictureFolder + "/" + partPictureName(kind) + ")\n\n";

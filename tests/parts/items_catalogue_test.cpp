@@ -117,3 +117,26 @@ TEST_CASE("the printed catalogue names every kind and key with its default", "[p
             if (key.key != "kind") CHECK(text.find(std::string("  ").append(key.key).append(" "), at) != std::string::npos);
     }
 }
+
+TEST_CASE("a radius or length key's written default is the size the kind's default item has", "[parts][catalogue]") {
+    int checked = 0;
+    for (ItemKind kind : allPartKinds()) {
+        const ItemBodies bodies = kind->bodies(kind->make({0.0, 0.0}));
+        for (const PartKey& key : kind->keys()) {
+            CAPTURE(kind->name(), key.key, key.value);
+            if (key.key != "radius" && key.key != "length") continue;
+            // Every size key shows a number: "as above" sent authors to a summary, or to a refusal.
+            char* end = nullptr;
+            const std::string text(key.value);
+            const double value = std::strtod(text.c_str(), &end);
+            REQUIRE(end == text.c_str() + text.size());
+            if (key.key == "radius")
+                CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(), [&](const CircleDef& c) { return near(c.radius, value); }));
+            else
+                CHECK(std::any_of(bodies.segments.begin(), bodies.segments.end(),
+                                  [&](const SegmentDef& s) { return near((s.b - s.a).length(), value); }));
+            ++checked;
+        }
+    }
+    CHECK(checked >= 12);
+}

@@ -214,3 +214,5 @@ rube_cli_test("items --sheet writes a picture per kind" "items|--sheet|${RUBE_CL
               "-DSTDOUT_MATCH=^rube items: [0-9]+ pictures, 80x60, in ${RUBE_CLI_OUT}/sheet\n$" -DSTDERR_EMPTY=ON)
 rube_cli_test("items --sheet into a file is refused" "items|--sheet|${RUBE_CLI_DIR}/bad-mass.toml/sheet" 2
               "-DSTDERR_LINE=rube items: cannot write pictures to ${RUBE_CLI_DIR}/bad-mass.toml/sheet: Not a directory")
+rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
+              "-DSTDERR_LINE=rube: --size requires --sheet (see 'rube items --help')")

@@ -2,6 +2,7 @@
 // parses the command line and hands over to the subcommand chosen.
 #include "check_command.hpp"
 #include "exit_codes.hpp"
+#include "items_command.hpp"
 #include "play_window.hpp"
 #include "run_command.hpp"
 
@@ -327,6 +328,44 @@ CheckCommand::CheckCommand(CLI::App& app) {
     command_->add_option("files", files_, "Scene files (.toml) to validate")->required()->type_name("FILE");
 }
 
+// `rube items [--sheet DIR]`: the catalogue of part kinds, or their pictures.
+class ItemsCommand : Command {
+public:
+    explicit ItemsCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run();
+
+private:
+    CLI::App* command_ = nullptr;
+    rube::game::ItemsOptions options_;
+    std::string size_ = "320x240";
+    CLI::Option* sheetOption_ = nullptr;
+    CLI::Option* sizeOption_ = nullptr;
+};
+
+ItemsCommand::ItemsCommand(CLI::App& app) {
+    command_ = app.add_subcommand("items", "List every part kind with its keys, defaults, units and meaning; or draw them");
+    command_->footer("The same catalogue, with pictures, is game/items.md. Every picture is one kind's default\n"
+                     "  item drawn as 'rube run' draws levels, with its name, its inventory icon in the top right\n"
+                     "  corner and a 1 m bar (each picture is framed to its part). A progress line is shown only\n"
+                     "  when stderr is a terminal. Regenerate the committed pictures with\n"
+                     "  rube items --sheet game/items.\n"
+                     "Exit status: 0 done, 1 no GL context, 2 bad usage or a folder that cannot be written.");
+    sheetOption_ = command_->add_option("--sheet", options_.sheet, "Draw one labelled PNG per kind into DIR/<kind>.png (created if missing)")
+                       ->type_name("DIR");
+    sizeOption_ = command_->add_option("--size", size_, "Each picture's size in pixels (default 320x240)")
+        ->type_name("WxH")
+        ->check(CLI::Validator(frameSizeError, ""));
+}
+
+ExitCode ItemsCommand::run() {
+    if (*sheetOption_ && options_.sheet.empty()) return usageError("--sheet: expected a folder, got ''", "rube items --help");
+    if (*sizeOption_ && !*sheetOption_) return usageError("--size requires --sheet", "rube items --help");
+    options_.size = *parseFrameSize(size_); // the validator has accepted it, or it is the default
+    options_.progress = ::isatty(STDERR_FILENO) == 1;
+    return rube::game::listItems(options_, std::cout, std::cerr);
+}
+
 // Parses the command line into the commands' fields. Returns the status to exit with when there
 // is nothing to run (--help, --version, a usage error), nothing when a command is to run.
 std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
@@ -334,7 +373,7 @@ std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
     if (argc > 1 && argv[1][0] != '-') {
         const auto commands = std::as_const(app).get_subcommands([](const CLI::App*) { return true; });
         if (std::none_of(commands.begin(), commands.end(), [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
-            std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play and check (see 'rube --help')\n";
+            std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play, check and items (see 'rube --help')\n";
             return ExitCode::badInput;
         }
     }
@@ -368,9 +407,11 @@ int main(int argc, char** argv) {
     RunCommand run(app);
     CheckCommand check(app);
     PlayCommand play(app);
+    ItemsCommand items(app);
 
     if (const std::optional<ExitCode> done = parseCommandLine(app, argc, argv)) return rube::game::exitStatus(*done);
     if (run.chosen()) return rube::game::exitStatus(run.run());
     if (play.chosen()) return rube::game::exitStatus(play.run());
+    if (items.chosen()) return rube::game::exitStatus(items.run());
     return rube::game::exitStatus(check.run());
 }

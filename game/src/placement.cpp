@@ -71,6 +71,7 @@ bool inside(const Aabb& outer, const Aabb& inner) {
 ItemDesc placedItem(const Placement& placement) {
     ItemDesc item = defaultItem(placement.kind, placement.position);
     item.angle = placement.angle;
+    if (placement.params) item.params = *placement.params;
     item.name = placement.name;
     item.place = placement.place;
     return item;

@@ -3,7 +3,9 @@
 
 #include "scene.hpp"
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rube::game {
@@ -17,6 +19,10 @@ struct Placement {
     SourcePlace place;               ///< where the script wrote it
     double angleDegrees = 0.0;       ///< `angle` in degrees as the script wrote it, so a recorded
                                      ///< session writes back exactly what it read
+    std::optional<PartParams> params{}; ///< the kind's own parameters a script gave (a plank's length,
+                                      ///< a bomb's trigger); none: the kind's defaults
+    std::vector<std::pair<std::string, std::string>> ownKeys{}; ///< those keys and their values as TOML
+                                      ///< text, in file order, so a script writes back what it read
 };
 
 /// A placement that was refused: which rule, and the words of the message.
@@ -30,7 +36,7 @@ struct PlacementRefusal {
 /// fixed part and no earlier placement. Returns the first refusal, or nothing when all are fine.
 std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const std::vector<Placement>& placements);
 
-/// The item a placement puts into the level: the kind's defaults at the placement's pose.
+/// The item a placement puts into the level: the kind's defaults, or the parameters the script gave, at the placement's pose.
 ItemDesc placedItem(const Placement& placement);
 
 } // namespace rube::game

@@ -2,6 +2,7 @@
 // checked against the level they play (names, kinds, and the placement rules).
 #include "script_file.hpp"
 
+#include "scene_reading.hpp"
 #include "toml_reader.hpp"
 
 #include <algorithm>
@@ -52,12 +53,49 @@ void readCapture(TableReader& root, ScriptDesc& script) {
     script.every = capture.integer("every", 1, 10'000);
 }
 
-void readPlacements(TableReader& root, ScriptDesc& script) {
+std::string tomlString(std::string_view text); // below, with the writer
+
+// The TOML text of a value as the file wrote it: a string quoted as the writer quotes names, a
+// number or array as TOML prints them.
+std::string tomlText(const toml::node& node) {
+    if (const auto* text = node.as_string()) return tomlString(text->get());
+    std::ostringstream out;
+    node.visit([&](const auto& value) { out << value; });
+    return out.str();
+}
+
+// A [[place]] table's keys: its own, and once its kind is known the kind's own keys, which it may
+// give as a level's [[item]] does (a plank's length, a bomb's trigger and fuse).
+std::vector<std::string_view> placeKeys(const toml::table& table) {
+    std::vector<std::string_view> keys(std::begin(kPlaceKeys), std::end(kPlaceKeys));
+    const toml::node* kind = table.get("kind");
+    const ItemKind named = kind && kind->is_string() ? findPartKind(kind->as_string()->get()) : nullptr;
+    if (named && named->placeable())
+        for (const PartKey& key : named->keys())
+            if (std::find(keys.begin(), keys.end(), key.key) == keys.end()) keys.push_back(key.key);
+    return keys;
+}
+
+// A placement's name must be new: actions and expectations find placed items by it, as level items.
+void checkPlacedName(TableReader& place, const Placement& p, const SceneDesc& level, const ScriptDesc& script) {
+    if (p.name.empty()) return;
+    if (level.level.find(p.name) >= 0) {
+        place.error(place.valuePlace("name"), "name '" + p.name + "' is taken by an item of level '" + level.name + "'");
+        return;
+    }
+    for (const Placement& earlier : script.placements)
+        if (earlier.name == p.name)
+            place.error(place.valuePlace("name"),
+                        "name '" + p.name + "' is taken by the placement at line " + std::to_string(earlier.place.line));
+}
+
+void readPlacements(TableReader& root, const SceneDesc& level, ScriptDesc& script) {
     std::vector<std::string_view> placeable;
     for (ItemKind kind : allPartKinds())
         if (kind->placeable()) placeable.push_back(kind->name());
     for (const toml::table* table : root.arrayOfTables("place")) {
-        TableReader place(*table, "in [[place]]", kPlaceKeys, root.diagnostics());
+        const std::vector<std::string_view> keys = placeKeys(*table);
+        TableReader place(*table, "in [[place]]", keys, root.diagnostics());
         Placement p;
         const auto kind = place.choice("kind", placeable, Need::required);
         const auto position = place.vec2("position", Need::required);
@@ -70,6 +108,22 @@ void readPlacements(TableReader& root, ScriptDesc& script) {
         if (!kind || !position) continue;
         p.kind = partKind(placeable[*kind]);
         p.position = *position;
+        checkPlacedName(place, p, level, script);
+        // A TOML table iterates in key order; the file's order is the one to write back.
+        std::vector<std::pair<toml::source_position, std::pair<std::string, std::string>>> own;
+        for (const auto& [key, value] : *table)
+            if (std::find(std::begin(kPlaceKeys), std::end(kPlaceKeys), key.str()) == std::end(kPlaceKeys))
+                own.push_back({key.source().begin, {std::string(key.str()), tomlText(value)}});
+        std::sort(own.begin(), own.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (auto& entry : own) p.ownKeys.push_back(std::move(entry.second));
+        if (!p.ownKeys.empty()) {
+            // The kind reads its own keys, with its own ranges and rules, as in a level's [[item]].
+            SceneDesc scratch;
+            SceneReading reading{root.diagnostics(), scratch, {}, {}};
+            ItemDesc item = p.kind->make(p.position);
+            p.kind->read(place, item, reading);
+            p.params = item.params;
+        }
         script.placements.push_back(p);
     }
 }
@@ -210,9 +264,14 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
     }
     script.steps = root.integer("steps", 1, kMaxSteps);
     readCapture(root, script);
-    readPlacements(root, script);
-    for (const toml::table* table : root.arrayOfTables("action")) readAction(*table, diag, level, script);
-    readExpectations(root, level, script);
+    readPlacements(root, level, script);
+    // Actions and expectations may name placed items too: they join the level's items, after them,
+    // as LevelRun adds them.
+    SceneDesc placed = level;
+    for (const Placement& p : script.placements)
+        if (!p.name.empty()) placed.level.items.push_back(placedItem(p));
+    for (const toml::table* table : root.arrayOfTables("action")) readAction(*table, diag, placed, script);
+    readExpectations(root, placed, script);
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     // The rules of placement are checked last: they only make sense for a script that reads.
     if (const auto refusal = checkPlacements(level, script.placements)) {
@@ -267,6 +326,7 @@ void writePlacement(std::ostream& out, const Placement& p) {
         << scriptNumber(p.position.y) << "]\n";
     if (p.angleDegrees != 0.0 || std::signbit(p.angleDegrees)) out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
     if (!p.name.empty()) out << "name = " << tomlString(p.name) << '\n';
+    for (const auto& [key, value] : p.ownKeys) out << key << " = " << value << '\n';
 }
 
 void writeAction(std::ostream& out, const Action& a) {

@@ -95,7 +95,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play and check (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, check and items (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -252,3 +252,13 @@ foreach(method auto solver)
 endforeach()
 rube_cli_test("exact runs a scene inside its pair budget" "run|${RUBE_LEVELS}/pool-break.toml|--no-render|--steps|2|--method|exact" 0
               "-DSTDOUT_MATCH=steps: +2\n")
+
+# `rube items`: the catalogue lists every kind (the heavy ball first, with its measured defaults),
+# and --sheet draws one picture per kind; a folder that cannot be made is one line and status 2.
+rube_cli_test("items lists every kind" "items" 0 "-DSTDOUT_MATCH=^heavy: [^\n]*\n  as made: a ball of radius 0.3 m, 8 kg")
+rube_cli_test("items --sheet writes a picture per kind" "items|--sheet|${RUBE_CLI_OUT}/sheet|--size|80x60" 0
+              "-DSTDOUT_MATCH=^rube items: [0-9]+ pictures, 80x60, in ${RUBE_CLI_OUT}/sheet\n$" -DSTDERR_EMPTY=ON)
+rube_cli_test("items --sheet into a file is refused" "items|--sheet|${RUBE_CLI_DIR}/bad-mass.toml/sheet" 2
+              "-DSTDERR_LINE=rube items: cannot write pictures to ${RUBE_CLI_DIR}/bad-mass.toml/sheet: Not a directory")
+rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
+              "-DSTDERR_LINE=rube: --size requires --sheet (see 'rube items --help')")

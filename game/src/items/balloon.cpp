@@ -14,6 +14,7 @@ public:
     std::string_view summary() const override {
         return "a blue 0.1 kg ball on a string, radius 0.35 m, bounciness 0.5, lifted by 2 |g|: it rises at g";
     }
+    std::span<const PartKey> keys() const override { return kKeys; }
     double speedGiven(const ItemDesc& item, double lightest, double g, double seconds) const override {
         (void)item, (void)lightest;
         return (1.0 - kBalloonGravityScale) * g * seconds; // its lift, 2 g, against gravity's g
@@ -29,6 +30,9 @@ protected:
         list.line(pt(c.position - Vec2{0.0, c.radius}), pt(c.position - Vec2{0.0, 2.5 * c.radius}), 1.5f,
                   render::Palette::greybox()["ball_outline"]);
     }
+
+private:
+    static constexpr auto kKeys = ballKeys("0.35");
 };
 
 } // namespace

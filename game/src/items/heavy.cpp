@@ -11,12 +11,16 @@ public:
     std::string_view summary() const override {
         return "a dark 8 kg ball, radius 0.3 m, bounciness 0.2: dull on anything";
     }
+    std::span<const PartKey> keys() const override { return kKeys; }
 
 protected:
     double radius() const override { return 0.3; }
     double mass() const override { return 8.0; }
     double bounciness() const override { return 0.2; }
     render::Style look() const override { return style("ground", "ball_outline"); }
+
+private:
+    static constexpr auto kKeys = ballKeys("0.3");
 };
 
 } // namespace

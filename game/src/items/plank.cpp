@@ -11,6 +11,7 @@ public:
     std::string_view summary() const override {
         return "a fixed board, 2 m long, bounciness 0.5, centred on its position";
     }
+    std::span<const PartKey> keys() const override { return kKeys; }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {
         (void)available;
         const float r = static_cast<float>(0.5 * size);
@@ -21,6 +22,9 @@ public:
 protected:
     double length() const override { return 2.0; }
     double bounciness() const override { return 0.5; }
+
+private:
+    static constexpr auto kKeys = boardKeys("2");
 };
 
 } // namespace

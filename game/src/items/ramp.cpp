@@ -11,6 +11,7 @@ public:
     std::string_view summary() const override {
         return "a fixed board, 3 m long, bounciness 0.3, centred on its position";
     }
+    std::span<const PartKey> keys() const override { return kKeys; }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {
         (void)available;
         const float r = static_cast<float>(0.5 * size);
@@ -22,6 +23,9 @@ public:
 protected:
     double length() const override { return 3.0; }
     double bounciness() const override { return 0.3; }
+
+private:
+    static constexpr auto kKeys = boardKeys("3");
 };
 
 } // namespace

@@ -11,6 +11,7 @@ public:
     std::string_view summary() const override {
         return "a grey 4 kg ball, radius 0.2 m, bounciness 0.7: the one ball magnets pull";
     }
+    std::span<const PartKey> keys() const override { return kKeys; }
 
 protected:
     double radius() const override { return 0.2; }
@@ -18,6 +19,9 @@ protected:
     double bounciness() const override { return 0.7; }
     bool magnetic() const override { return true; }
     render::Style look() const override { return style("kinematic", "ball_outline"); }
+
+private:
+    static constexpr auto kKeys = ballKeys("0.2");
 };
 
 } // namespace

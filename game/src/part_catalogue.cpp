@@ -51,15 +51,6 @@ std::string keyDefault(ItemKind kind, const PartKey& key) {
     return required ? "required" : std::string(key.value);
 }
 
-// A cell of a Markdown table: a '|' in the text would end it.
-std::string cell(std::string_view text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '|') out += '\\';
-        out += c;
-    }
-    return out;
-}
 
 } // namespace
 
@@ -141,7 +132,7 @@ std::string partCatalogueMarkdown(const std::string& pictureFolder) {
         out += "\n\nAs made: " + partDefaults(kind) + ".\n\n| key | default | meaning |\n|---|---|---|\n";
         for (const PartKey& key : kind->keys()) {
             if (key.key == kKindKey.key) continue;
-            out += "| `" + std::string(key.key) + "` | " + cell(keyDefault(kind, key)) + " | " + cell(key.doc) + " |\n";
+            out += "| `" + std::string(key.key) + "` | " + markdownCell(keyDefault(kind, key)) + " | " + markdownCell(key.doc) + " |\n";
         }
     }
     return out;

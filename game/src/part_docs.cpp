@@ -5,10 +5,7 @@
 
 namespace rube::game {
 
-namespace {
-
-// A cell of a Markdown table: a '|' in the text would end it.
-std::string cell(std::string_view text) {
+std::string markdownCell(std::string_view text) {
     std::string out;
     for (char c : text) {
         if (c == '|') out += '\\';
@@ -17,20 +14,18 @@ std::string cell(std::string_view text) {
     return out;
 }
 
-} // namespace
-
 std::string partKindsMarkdown() {
     std::string out = "| kind | key | default | meaning |\n|---|---|---|---|\n";
     for (ItemKind kind : allPartKinds()) {
         std::string traits;
         if (kind->placeable()) traits += "; placeable";
         if (kind->turns()) traits += ", turns";
-        out += "| **" + std::string(kind->name()) + "** | | | " + cell(kind->summary()) + traits + " |\n";
+        out += "| **" + std::string(kind->name()) + "** | | | " + markdownCell(kind->summary()) + traits + " |\n";
         for (const PartKey& key : kind->keys()) {
             if (key.key == kKindKey.key) continue; // every item has it: it names the row above
             const bool required = key.value == "required" || (key.key == kNameKey.key && kind->needsName());
-            out += "| | `" + std::string(key.key) + "` | " + (required ? std::string("required") : cell(key.value)) +
-                   " | " + cell(key.doc) + " |\n";
+            out += "| | `" + std::string(key.key) + "` | " + (required ? std::string("required") : markdownCell(key.value)) +
+                   " | " + markdownCell(key.doc) + " |\n";
         }
     }
     return out;

@@ -209,6 +209,8 @@ ItemKind partKind(std::string_view name);
 std::vector<ItemKind> partKindsPlaying(PartRole role);
 /// The docs' table of every kind and its keys (game/scene-format.md holds it; a test checks they agree).
 std::string partKindsMarkdown();
+/// `text` as a cell of a Markdown table: a '|' in it is escaped, since it would end the cell.
+std::string markdownCell(std::string_view text);
 
 } // namespace rube::game
 

@@ -62,6 +62,14 @@ std::vector<Capsule> fixedParts(const SceneDesc& scene) {
     return parts;
 }
 
+// "1 ramp", "0 ramps", "2 heavy balls": a kind's name counted in English. A ball kind's name is an
+// adjective (heavy, steel, bouncy), so it takes the noun, unless the name says ball itself (balloon).
+std::string kindCount(ItemKind kind, int count) {
+    std::string words(itemKindName(kind));
+    if (kind->isBall() && !words.starts_with("ball")) words += " ball";
+    return words + (count == 1 ? "" : "s");
+}
+
 bool inside(const Aabb& outer, const Aabb& inner) {
     return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
 }
@@ -111,8 +119,8 @@ std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const st
         const auto stock = scene.level.inventory.find(kind);
         const int have = stock == scene.level.inventory.end() ? 0 : stock->second;
         if (used[kind] + 1 > have) {
-            refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kind +
-                   (have == 1 ? "" : "s") + " and this is number " + std::to_string(used[kind] + 1));
+            refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kindCount(p.kind, have) +
+                   " and this is number " + std::to_string(used[kind] + 1));
             continue;
         }
         const Aabb extent = itemExtent(item);

@@ -226,9 +226,13 @@ foreach(stem warnings self-solving missed)
   rube_cli_test("check --strict refuses ${stem}" "check|--strict|${lint}/${stem}.toml" 2 "-DSTDOUT_MATCH=^$")
 endforeach()
 # A script lists every error, reading errors and each refused placement alike, against --level.
-foreach(script script-errors.toml placements.solution.toml)
+foreach(script script-errors.toml placements.solution.toml no-heavy.toml)
   rube_cli_test("check script ${script}" "check|--level|${PROJECT_SOURCE_DIR}/levels/ramp.toml|${lint}/${script}" 2
                 -DSTDERR_FIXTURE_ALL=${lint}/${script})
+endforeach()
+# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch.
+foreach(stem zones-typo switch-empty)
+  rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
               "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml beside NAME.toml: name the level with --level LEVEL")

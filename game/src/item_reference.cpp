@@ -13,23 +13,28 @@ int LevelDesc::find(std::string_view name) const {
 }
 
 std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name, PartRole role,
-                               std::string_view where) {
+                               std::string_view where, const std::vector<std::string>* ropeNames) {
     const std::vector<ItemKind> kinds = partKindsPlaying(role);
     const int index = level.find(name);
     const auto fits = [&](ItemKind kind) { return std::find(kinds.begin(), kinds.end(), kind) != kinds.end(); };
     if (index >= 0 && fits(level.items[static_cast<std::size_t>(index)].kind)) return "";
     // "target", "cannon or bomb", "cannon, bomb, fan or magnet".
+    // A switch may also cut a named [[rope]]: then ropes are among what would do.
+    std::vector<std::string_view> words;
+    for (ItemKind kind : kinds) words.push_back(itemKindName(kind));
+    if (ropeNames) words.push_back("rope");
     std::string kindWords;
-    std::size_t i = 0;
-    for (ItemKind kind : kinds) {
-        if (i > 0) kindWords += i + 1 == kinds.size() ? " or " : ", ";
-        kindWords += itemKindName(kind);
-        ++i;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        if (i > 0) kindWords += i + 1 == words.size() ? " or " : ", ";
+        kindWords += words[i];
     }
     // Only names that would do are offered: a typo of a bomb's name is no help where a cannon is wanted.
     std::vector<std::string_view> candidates;
     for (const ItemDesc& item : level.items)
         if (fits(item.kind) && !item.name.empty()) candidates.push_back(item.name);
+    if (ropeNames)
+        for (const std::string& rope : *ropeNames)
+            if (!rope.empty()) candidates.push_back(rope);
     const std::string none = "the level has no " + kindWords;
     if (index < 0)
         return "unknown " + kindWords + " '" + std::string(name) + "'" + std::string(where) +

@@ -48,9 +48,10 @@ struct LevelDesc {
 inline std::string_view itemKindName(ItemKind kind) { return kind->name(); }
 /// "" when `name` is an item of a kind that plays `role`, else the one-line error for naming it
 /// through `key` ("target 'T' is a bomb, not a target", or "unknown target 'U'" + `where` + a hint):
-/// the one wording for every reference, from a level's goal and switches or from a script.
+/// the one wording for every reference, from a level's goal and switches or from a script. With
+/// `ropeNames` (a switch's `triggers`), the level's named ropes are listed among what would do.
 std::string itemReferenceError(const LevelDesc& level, std::string_view key, std::string_view name, PartRole role,
-                               std::string_view where = "");
+                               std::string_view where = "", const std::vector<std::string>* ropeNames = nullptr);
 /// An item of `kind` at `position` with every size and property at the kind's default.
 inline ItemDesc defaultItem(ItemKind kind, Vec2 position) { return kind->make(position); }
 /// The bodies of `item`.

@@ -73,7 +73,15 @@ constexpr const char* kRunFooter =
 constexpr const char* kCheckFooter =
     "Every error is one line, file:line:col: message, so editors can jump to it. Unknown keys are\n"
     "errors (a typo must not silently become a default) and come with the closest known key.\n"
-    "Exit status: 0 when every file is ok, 2 otherwise.";
+    "Scripts: a file named NAME.solution.toml, or holding level, steps, [capture], [[place]],\n"
+    "  [[action]] or [[expect]], is a solution script. It is checked against its level (--level\n"
+    "  LEVEL, else NAME.toml beside it): every placement allowed, every item an action or\n"
+    "  expectation names exists and is of the right kind, actions in frame order.\n"
+    "Levels are also linted, as 'file:line:col: warning: message': no [goal]; a zone outside the\n"
+    "  [view] or the world's bounds; an inventory without a zone or zones without an inventory;\n"
+    "  fixed items overlapping; and, run headless, a goal reached with nothing placed, or a\n"
+    "  NAME.solution.toml beside the level that does not reach the goal.\n"
+    "Exit status: 0 when every file is ok (warnings allowed unless --strict), 2 otherwise.";
 
 constexpr const char* kPlayFooter =
     "The window shows the level as 'rube run' draws it, with the inventory bar below.\n"
@@ -310,22 +318,27 @@ ExitCode PlayCommand::run() {
     return rube::game::playInWindow(options_, std::cout, std::cerr);
 }
 
-// `rube check FILE...`: the files, nothing else.
+// `rube check FILE...`: the files, the level scripts are checked against, and --strict.
 class CheckCommand : Command {
 public:
     explicit CheckCommand(CLI::App& app);
     bool chosen() const { return static_cast<bool>(*command_); }
-    ExitCode run() const { return rube::game::checkScenes(files_, std::cout, std::cerr); }
+    ExitCode run() const { return rube::game::checkFiles(options_, std::cout, std::cerr); }
 
 private:
     CLI::App* command_ = nullptr;
-    std::vector<std::string> files_;
+    rube::game::CheckOptions options_;
 };
 
 CheckCommand::CheckCommand(CLI::App& app) {
-    command_ = app.add_subcommand("check", "Validate scene files and report every error as file:line:col: message");
+    command_ = app.add_subcommand("check", "Validate scene, level and script files and lint levels; every error as file:line:col: message");
     command_->footer(kCheckFooter);
-    command_->add_option("files", files_, "Scene files (.toml) to validate")->required()->type_name("FILE");
+    command_->add_option("files", options_.files, "Scene, level and solution script files (.toml) to validate")
+        ->required()
+        ->type_name("FILE");
+    command_->add_option("--level", options_.level, "The level the scripts given are checked against (default: NAME.toml beside NAME.solution.toml)")
+        ->type_name("LEVEL");
+    command_->add_flag("--strict", options_.strict, "Treat warnings as errors (exit 2); CI checks levels/ with it");
 }
 
 // `rube items [--sheet DIR]`: the catalogue of part kinds, or their pictures.

@@ -62,6 +62,14 @@ std::vector<Capsule> fixedParts(const SceneDesc& scene) {
     return parts;
 }
 
+// "1 ramp", "0 ramps", "2 heavy balls": a kind's name counted in English. A ball kind's name is an
+// adjective (heavy, steel, bouncy), so it takes the noun, unless the name says ball itself (balloon).
+std::string kindCount(ItemKind kind, int count) {
+    std::string words(itemKindName(kind));
+    if (kind->isBall() && !words.starts_with("ball")) words += " ball";
+    return words + (count == 1 ? "" : "s");
+}
+
 bool inside(const Aabb& outer, const Aabb& inner) {
     return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
 }
@@ -78,6 +86,29 @@ ItemDesc placedItem(const Placement& placement) {
 }
 
 std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const std::vector<Placement>& placements) {
+    std::vector<PlacementRefusal> all = placementRefusals(scene, placements);
+    if (all.empty()) return std::nullopt;
+    return std::move(all.front());
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> overlappingItems(const SceneDesc& scene) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::vector<std::vector<Capsule>> shapes;
+    for (const ItemDesc& item : scene.level.items) {
+        shapes.emplace_back();
+        addBodies(item.kind->room(item), itemWords(item), shapes.back());
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        for (std::size_t j = i + 1; j < shapes.size(); ++j)
+            if (std::any_of(shapes[i].begin(), shapes[i].end(), [&](const Capsule& p) {
+                    return std::any_of(shapes[j].begin(), shapes[j].end(), [&](const Capsule& q) { return overlaps(p, q); });
+                }))
+                pairs.emplace_back(i, j);
+    return pairs;
+}
+
+std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const std::vector<Placement>& placements) {
+    std::vector<PlacementRefusal> refusals;
     std::vector<Capsule> taken = fixedParts(scene);
     std::map<std::string, int, std::less<>> used;
     for (std::size_t i = 0; i < placements.size(); ++i) {
@@ -85,28 +116,38 @@ std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const st
         const ItemDesc item = placedItem(p);
         const std::string kind(itemKindName(p.kind));
         const std::string head = "placement refused: " + kind + " at " + formatPair(p.position.x, p.position.y) + " ";
-        const auto refuse = [&](std::string why) { return PlacementRefusal{i, head + why}; };
+        const auto refuse = [&](std::string why) { refusals.push_back(PlacementRefusal{i, head + why}); };
         const auto stock = scene.level.inventory.find(kind);
         const int have = stock == scene.level.inventory.end() ? 0 : stock->second;
-        if (++used[kind] > have)
-            return refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kind +
-                          (have == 1 ? "" : "s") + " and this is number " + std::to_string(used[kind]));
+        if (used[kind] + 1 > have) {
+            refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kindCount(p.kind, have) +
+                   " and this is number " + std::to_string(used[kind] + 1));
+            continue;
+        }
         const Aabb extent = itemExtent(item);
         const bool inZone = std::any_of(scene.level.zones.begin(), scene.level.zones.end(),
                                         [&](const Zone& z) { return inside(z.box, extent); });
-        if (!inZone)
-            return refuse(scene.level.zones.empty() ? std::string("is outside every placement zone (the level has none)")
-                                                    : "is not wholly inside a placement zone (it spans " +
-                                                          formatPair(extent.min.x, extent.min.y) + " to " +
-                                                          formatPair(extent.max.x, extent.max.y) + ")");
+        if (!inZone) {
+            refuse(scene.level.zones.empty() ? std::string("is outside every placement zone (the level has none)")
+                                             : "is not wholly inside a placement zone (it spans " +
+                                                   formatPair(extent.min.x, extent.min.y) + " to " +
+                                                   formatPair(extent.max.x, extent.max.y) + ")");
+            continue;
+        }
         std::vector<Capsule> mine;
         addBodies(itemBodies(item), "placement " + std::to_string(i + 1) + " (" + kind + ")", mine);
+        const Capsule* hit = nullptr;
         for (const Capsule& shape : mine)
             for (const Capsule& other : taken)
-                if (overlaps(shape, other)) return refuse("overlaps " + other.what);
+                if (!hit && overlaps(shape, other)) hit = &other;
+        if (hit) {
+            refuse("overlaps " + hit->what);
+            continue;
+        }
         taken.insert(taken.end(), mine.begin(), mine.end());
+        ++used[kind]; // only what was placed uses the inventory up
     }
-    return std::nullopt;
+    return refusals;
 }
 
 } // namespace rube::game

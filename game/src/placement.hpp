@@ -36,6 +36,14 @@ struct PlacementRefusal {
 /// fixed part and no earlier placement. Returns the first refusal, or nothing when all are fine.
 std::optional<PlacementRefusal> checkPlacements(const SceneDesc& scene, const std::vector<Placement>& placements);
 
+/// Every refusal of checkPlacements(), not just the first, so `rube check` lists them all; a refused
+/// placement takes no room, so one mistake does not make later placements overlap it.
+std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const std::vector<Placement>& placements);
+
+/// The pairs of fixed items (indices into level.items) whose bodies overlap: a lint, since the
+/// physics pushes them apart on the first step and the level does not start as drawn.
+std::vector<std::pair<std::size_t, std::size_t>> overlappingItems(const SceneDesc& scene);
+
 /// The item a placement puts into the level: the kind's defaults, or the parameters the script gave, at the placement's pose.
 ItemDesc placedItem(const Placement& placement);
 

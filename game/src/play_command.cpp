@@ -194,7 +194,11 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     out << "steps:            " << run.frame() << '\n';
     for (const GameEvent& e : run.events())
         out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item) << '\n';
-    out << "goal:             " << (run.goalFrame() ? "reached at frame " + std::to_string(*run.goalFrame()) : std::string("not reached")) << '\n';
+    // A level without a [goal] has nothing to miss: it says so and exits 0, as a physics scene does.
+    const std::string goalWords = run.goalFrame()        ? "reached at frame " + std::to_string(*run.goalFrame())
+                                  : level.level.goal ? std::string("not reached")
+                                                     : std::string("none (the level has no [goal])");
+    out << "goal:             " << goalWords << '\n';
     out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
     if (signal.empty() && !options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";

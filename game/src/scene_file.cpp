@@ -11,10 +11,12 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid", "segment", "water", "rope", "box", "capsule", "pivot"};
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
-// The level's tables: accepted everywhere, but not offered in a physics scene's key list.
-constexpr std::string_view kLevelKeys[] = {"goal", "item", "inventory", "zone"};
+// Every top-level key, the level's tables (item, inventory, zone, goal) included, so a `[[zones]]`
+// typo is offered `zone`: one format for scenes and levels, one list.
+constexpr std::string_view kTopAndLevelKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid",
+                                                 "segment", "water", "rope", "box", "capsule", "pivot",
+                                                 "item", "inventory", "zone", "goal"};
 constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
                                            "substeps",  "max_events_per_step", "resting_speed", "duration",
                                            "air_drag",  "sleep_speed",         "time_to_sleep"};
@@ -204,7 +206,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     toml::table& document = *parsed;
     SceneDesc scene;
     SceneReading reading{diag, scene, {}, {}};
-    TableReader root(document, "at the top level", kTopKeys, diag, kTopHomes, kLevelKeys);
+    TableReader root(document, "at the top level", kTopAndLevelKeys, diag, kTopHomes);
     if (const auto name = root.string("name", Need::required)) {
         if (name->empty()) root.error(root.valuePlace("name"), "name must not be empty");
         scene.name = *name;

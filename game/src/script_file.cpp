@@ -274,10 +274,9 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
     readExpectations(root, placed, script);
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
     // The rules of placement are checked last: they only make sense for a script that reads.
-    if (const auto refusal = checkPlacements(level, script.placements)) {
-        diag.error(script.placements[refusal->index].place, refusal->message);
-        return {std::nullopt, diag.sorted()};
-    }
+    for (const PlacementRefusal& refusal : placementRefusals(level, script.placements))
+        diag.error(script.placements[refusal.index].place, refusal.message);
+    if (!diag.empty()) return {std::nullopt, diag.sorted()};
     return {std::move(script), {}};
 }
 

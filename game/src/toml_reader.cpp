@@ -32,6 +32,8 @@ bool NumberRange::contains(double value) const {
 }
 
 std::string NumberRange::describe() const {
+    // A bound that excludes min says so: "between 0 and 100" would let 0 through.
+    if (std::isfinite(max) && minExcluded) return "greater than " + formatNumber(min) + " and at most " + formatNumber(max);
     if (std::isfinite(max)) return "between " + formatNumber(min) + " and " + formatNumber(max);
     return (minExcluded ? "greater than " : "at least ") + formatNumber(min);
 }

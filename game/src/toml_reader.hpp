@@ -55,7 +55,7 @@ struct NumberRange {
 
     /// True when `value` lies in the interval.
     bool contains(double value) const;
-    /// "greater than 0", "at least 0", "between 0 and 1".
+    /// "greater than 0", "at least 0", "between 0 and 1", "greater than 0 and at most 100".
     std::string describe() const;
 };
 

@@ -262,3 +262,37 @@ rube_cli_test("items --sheet into a file is refused" "items|--sheet|${RUBE_CLI_D
               "-DSTDERR_LINE=rube items: cannot write pictures to ${RUBE_CLI_DIR}/bad-mass.toml/sheet: Not a directory")
 rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
               "-DSTDERR_LINE=rube: --size requires --sheet (see 'rube items --help')")
+
+# Check and lint (issue 23). Every shipped level, with its solution script, passes `rube check
+# --strict`: no warning (the lint runs the level headless with nothing placed and with its
+# solution), and the script reads against its level.
+file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
+list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+foreach(level IN LISTS shipped_levels)
+  get_filename_component(stem ${level} NAME_WE)
+  set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)
+  rube_cli_test("check --strict level ${stem}" "check|--strict|${level}|${solution}" 0 -DSTDERR_EMPTY=ON
+                "-DSTDOUT_MATCH=^[^\n]*${stem}.toml: ok\n[^\n]*${stem}.solution.toml: ok \\(a script for [^\n]*${stem}.toml\\)\n$")
+endforeach()
+set(lint ${RUBE_CLI_DIR}/lint)
+# Each lint fixture lists its warnings in '# expect:' lines; warnings leave the status 0, --strict makes it 2.
+foreach(stem warnings self-solving missed)
+  rube_cli_test("check lints ${stem}" "check|${lint}/${stem}.toml" 0 -DSTDERR_FIXTURE_ALL=${lint}/${stem}.toml
+                "-DSTDOUT_MATCH=${stem}.toml: ok, [0-9]+ warnings?\n$")
+  rube_cli_test("check --strict refuses ${stem}" "check|--strict|${lint}/${stem}.toml" 2 "-DSTDOUT_MATCH=^$")
+endforeach()
+# A script lists every error, reading errors and each refused placement alike, against --level.
+foreach(script script-errors.toml placements.solution.toml no-heavy.toml)
+  rube_cli_test("check script ${script}" "check|--level|${PROJECT_SOURCE_DIR}/levels/ramp.toml|${lint}/${script}" 2
+                -DSTDERR_FIXTURE_ALL=${lint}/${script})
+endforeach()
+# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch.
+foreach(stem zones-typo switch-empty)
+  rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
+endforeach()
+rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
+              "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml beside NAME.toml: name the level with --level LEVEL")
+rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT_MATCH=--level LEVEL.*--strict")
+# A level without a [goal] has nothing to miss: `rube run` says so and exits 0.
+rube_cli_test("run a level without a goal" "run|${lint}/warnings.toml|--no-render|--steps|20" 0
+              "-DSTDOUT_MATCH=goal: +none \\(the level has no \\[goal\\]\\)\n" -DSTDERR_EMPTY=ON)

@@ -4,6 +4,8 @@
 #   STDOUT_MATCH=<regex>     stdout matches
 #   STDERR_LINE=<text>       stderr is exactly this one line
 #   STDERR_FIXTURE=<file>    stderr is exactly "<file>:<the fixture's '# expect: ' line>"
+#   STDERR_FIXTURE_ALL=<file> stderr is exactly one "<file>:<line>" for each of the fixture's
+#                            '# expect: ' lines, in their order (every error, not just the first)
 #   TRACE=<file>             removed before the run (with any leftover temporaries)
 #   NO_TRACE=ON              afterwards neither the trace nor a temporary beside it exists
 #   ROWS=<n>                 the trace has the exact header and n rows of 10 fields, none left over
@@ -67,6 +69,20 @@ if(DEFINED STDERR_FIXTURE)
   # file(STRINGS) escapes a ';' in the line as a list would; a message may hold one.
   string(REPLACE "\\;" ";" expect "${expect}")
   set(STDERR_LINE "${STDERR_FIXTURE}:${expect}")
+endif()
+if(DEFINED STDERR_FIXTURE_ALL)
+  file(STRINGS "${STDERR_FIXTURE_ALL}" expects REGEX "^# expect: ")
+  if(NOT expects)
+    fail("${STDERR_FIXTURE_ALL} has no '# expect: line:col: message' line")
+  endif()
+  set(wanted "")
+  foreach(expect IN LISTS expects)
+    string(REGEX REPLACE "^# expect: " "" expect "${expect}")
+    string(APPEND wanted "${STDERR_FIXTURE_ALL}:${expect}\n")
+  endforeach()
+  if(NOT err STREQUAL wanted)
+    fail("stderr is not the expected lines:\n${wanted}")
+  endif()
 endif()
 if(DEFINED STDERR_LINE AND NOT err STREQUAL "${STDERR_LINE}\n")
   fail("stderr is not the one expected line:\n${STDERR_LINE}")

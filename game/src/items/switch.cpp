@@ -12,6 +12,7 @@ struct SwitchParams {
     double radius = 0.2;  // m
     std::string triggers; // the name of what it triggers, or of the [[rope]] it cuts
     SourcePlace at;       // where the file wrote `triggers`, for the message when it names nothing that fits
+    bool given = false;   // `triggers` was written (an empty name is then an error; a missing one is already)
 };
 
 constexpr PartKey kKeys[] = {
@@ -40,12 +41,14 @@ public:
         if (const auto r = table.number("radius", kSizeRange)) p.radius = *r;
         p.triggers = table.string("triggers", Need::required).value_or("");
         p.at = table.valuePlace("triggers");
+        p.given = table.find("triggers") != nullptr;
     }
     // Checked once every item is known, so a switch may name a later cannon.
     void checkReferences(const ItemDesc& item, SceneReading& reading) const override {
         const SwitchParams& p = item.params.as<SwitchParams>();
-        if (p.triggers.empty() || reading.scene.findRope(p.triggers) >= 0) return; // a switch may cut a named [[rope]]
-        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered);
+        if (!p.given || reading.scene.findRope(p.triggers) >= 0) return; // a switch may cut a named [[rope]]
+        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered, "",
+                                                       &reading.scene.ropeNames);
             !message.empty())
             reading.diag.error(p.at, std::move(message));
     }

@@ -42,8 +42,7 @@ double closestApproach(const std::function<Vec2(double)>& f, double lo, double h
 // A ball of radius kBallRadius launched from `muzzle` in a World stepped with Method::exact, no obstacles,
 // for `duration` seconds; returns its closest approach to `target` (moving at targetVelocity from t = 0).
 // Between the world's steps the ball's exact path from the stepped state is searched, p + v tau + g tau^2 / 2.
-double simulatedMiss(Vec2 muzzle, Vec2 velocity, Vec2 gravity, Vec2 target, double duration,
-                     Vec2 targetVelocity = {}) {
+double simulatedMiss(Vec2 muzzle, Vec2 velocity, Vec2 gravity, Vec2 target, double duration, Vec2 targetVelocity = {}) {
     WorldDef def;
     def.gravity = gravity;
     def.method = Method::exact;
@@ -127,7 +126,7 @@ TEST_CASE("gravity shot: both arcs, flown by the exact method, pass the aimed po
     };
     // Below -y gravity, then sideways and tilted gravity (the solution never assumes a direction).
     const Case cases[] = {{{31, 7}, {0, -kG}}, {{21, -8}, {0, -kG}}, {{6, 17}, {0, -kG}}, {{-24, 5}, {0, -kG}},
-                          {{18, 12}, {3, -8}}, {{-5, 20}, {kG, 0}}, {{1, 30}, {0, -kG}}};
+                          {{18, 12}, {3, -8}}, {{-5, 20}, {kG, 0}},  {{1, 30}, {0, -kG}}};
     double worst = 0.0;
     for (const Case& c : cases) {
         const GravityShot shot = aimGravityShot(muzzle, c.target, 25.0, c.gravity);

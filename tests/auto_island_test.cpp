@@ -47,7 +47,8 @@ void addFrictionPile(World& world, int columns, int rows, bool touching) {
     const double dx = touching ? 2 * r : 0.24, dy = touching ? std::sqrt(3.0) * r : 0.24;
     for (int row = 0; row < rows; ++row)
         for (int col = 0; col < columns; ++col) {
-            CircleDef c = ball({kPileX - 0.8 + dx * col + (row % 2) * r * 0.5, r + (touching ? 0.0 : 0.3) + dy * row}, {}, r);
+            CircleDef c = ball({kPileX - 0.8 + dx * col + (row % 2) * r * 0.5, r + (touching ? 0.0 : 0.3) + dy * row},
+                               {}, r);
             if (touching) c.position.x = kPileX - 0.8 + dx * col + (row % 2) * r;
             c.mass = 0.1;
             c.material = {0.3, 0.5};
@@ -60,20 +61,23 @@ double overlapWithOthers(const World& world, int i) {
     double worst = 0.0;
     for (std::size_t j = 0; j < world.circles().size(); ++j)
         if (static_cast<int>(j) != i)
-            worst = std::max(worst, c.radius + world.circles()[j].radius - c.position.distance(world.circles()[j].position));
+            worst = std::max(worst,
+                             c.radius + world.circles()[j].radius - c.position.distance(world.circles()[j].position));
     return worst;
 }
 
 } // namespace
 
-TEST_CASE("auto per island: a ball far from a friction pile takes exact's steps as if alone, bit for bit", "[auto][island]") {
+TEST_CASE("auto per island: a ball far from a friction pile takes exact's steps as if alone, bit for bit",
+          "[auto][island]") {
     for (const bool touching : {true, false})
         for (const double speed : {0.5, 2.0, 10.0, 20.0, 60.0}) {
             INFO("impact speed " << speed << " m/s, pile " << (touching ? "at rest" : "falling"));
             World alone(defWith(Method::exact)), shared(defWith(Method::automatic));
             const int ball = addCapScene(alone, speed);
             REQUIRE(addCapScene(shared, speed) == ball);
-            addFrictionPile(shared, 6, touching ? 5 : 10, touching); // 61 balls falling: more than exact affords at once
+            addFrictionPile(shared, 6, touching ? 5 : 10,
+                            touching); // 61 balls falling: more than exact affords at once
             bool struckCap = false;
             for (int step = 0; step < 300; ++step) {
                 alone.step();
@@ -117,21 +121,25 @@ TEST_CASE("auto per island: a turning plank on a pivot far away leaves a bouncin
             alone.step();
             shared.step();
             INFO("step " << step);
-            REQUIRE(shared.circles()[static_cast<std::size_t>(ball)].position == alone.circles()[static_cast<std::size_t>(ball)].position);
-            REQUIRE(shared.circles()[static_cast<std::size_t>(ball)].velocity == alone.circles()[static_cast<std::size_t>(ball)].velocity);
+            REQUIRE(shared.circles()[static_cast<std::size_t>(ball)].position ==
+                    alone.circles()[static_cast<std::size_t>(ball)].position);
+            REQUIRE(shared.circles()[static_cast<std::size_t>(ball)].velocity ==
+                    alone.circles()[static_cast<std::size_t>(ball)].velocity);
         }
-        CHECK(shared.stats().solverBodySteps == 240); // the plank
-        CHECK(std::abs(shared.bodies()[0].angle) > 0.5);  // and it swung
+        CHECK(shared.stats().solverBodySteps == 240);    // the plank
+        CHECK(std::abs(shared.bodies()[0].angle) > 0.5); // and it swung
     }
 }
 
-TEST_CASE("auto per island: a ball thrown into a friction pile joins it and neither tunnels nor sinks in", "[auto][island]") {
+TEST_CASE("auto per island: a ball thrown into a friction pile joins it and neither tunnels nor sinks in",
+          "[auto][island]") {
     for (int k = 0; k <= 6; ++k) {
         const double speed = 2.0 * std::pow(10.0, k / 3.0); // 2 to 200 m/s
         INFO("speed " << speed << " m/s");
         World world(defWith(Method::automatic));
         addFrictionPile(world, 6, 3, true);
-        const int thrown = world.slot(world.addCircle(ball({kPileX - 0.5, 3.0}, Vec2{0.2, -1.0}.normalized() * speed, 0.1)));
+        const int thrown = world.slot(
+            world.addCircle(ball({kPileX - 0.5, 3.0}, Vec2{0.2, -1.0}.normalized() * speed, 0.1)));
         for (int step = 0; step < 180; ++step) {
             world.step();
             const Circle& c = world.circles()[static_cast<std::size_t>(thrown)];
@@ -143,7 +151,9 @@ TEST_CASE("auto per island: a ball thrown into a friction pile joins it and neit
     }
 }
 
-TEST_CASE("auto per island: a roped pendulum pair and a ball on a moving platform beside a friction pile move as alone under exact", "[auto][island]") {
+TEST_CASE("auto per island: a roped pendulum pair and a ball on a moving platform beside a friction pile move as alone "
+          "under exact",
+          "[auto][island]") {
     const auto addScene = [](World& world) {
         // A double pendulum: a ball on a rope from a fixed anchor, a second ball on a rope from it.
         const CircleId upper = world.addCircle(ball({-4.0, 3.0}, {}, 0.1));
@@ -151,7 +161,8 @@ TEST_CASE("auto per island: a roped pendulum pair and a ball on a moving platfor
         world.addRope(RopeDef{upper, {}, {-5.0, 3.0}, 1.0});
         world.addRope(RopeDef{lower, upper, {}, 1.0});
         // A lift rising 1 m in 2 s and coming back, with a ball dropped on it.
-        const int path = world.addPath(KinematicPath{{PathKey{0.0, {0.0, 0.0}}, PathKey{2.0, {0.0, 1.0}}, PathKey{4.0, {0.0, 0.0}}}, true});
+        const int path = world.addPath(
+            KinematicPath{{PathKey{0.0, {0.0, 0.0}}, PathKey{2.0, {0.0, 1.0}}, PathKey{4.0, {0.0, 0.0}}}, true});
         SegmentDef platform = line({-9.0, 0.0}, {-7.0, 0.0});
         platform.path = path;
         world.addSegment(platform);

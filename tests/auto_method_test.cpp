@@ -54,9 +54,12 @@ double largestOverlap(const World& world) {
     const auto circles = world.circles();
     for (std::size_t i = 0; i < circles.size(); ++i) {
         for (std::size_t j = i + 1; j < circles.size(); ++j)
-            worst = std::max(worst, circles[i].radius + circles[j].radius - circles[i].position.distance(circles[j].position));
+            worst = std::max(worst,
+                             circles[i].radius + circles[j].radius - circles[i].position.distance(circles[j].position));
         for (const Segment& s : world.segments())
-            worst = std::max(worst, circles[i].radius + s.radius - circles[i].position.distance(closestPointOnSegment(circles[i].position, s.a, s.b)));
+            worst = std::max(worst,
+                             circles[i].radius + s.radius -
+                                 circles[i].position.distance(closestPointOnSegment(circles[i].position, s.a, s.b)));
     }
     return worst;
 }
@@ -118,7 +121,7 @@ TEST_CASE("auto: a small crowd starts exact and falls back to the solver when th
     CHECK(s.autoSolverSteps < 300); // the fall before the first contacts is exact's
     CHECK(s.capsHit == 0);          // a failed trial is put back, not counted
     CHECK(s.escapes == 0);
-    CHECK(worstLate < 0.05 * 0.1);  // the solver's promise: overlaps under 5 % of a radius
+    CHECK(worstLate < 0.05 * 0.1); // the solver's promise: overlaps under 5 % of a radius
 }
 
 TEST_CASE("auto: friction on both sides of a contact is the solver's (exact has none)", "[auto]") {

@@ -85,8 +85,7 @@ TEST_CASE("blocks: a block moving diagonally into a block hits at t = a / b with
     CHECK_FALSE(blockBlockCollision(moving, {3.0, 3.0}, {0.5, 0.5}, 1.0));
 }
 
-TEST_CASE("blocks: a block against a circle hits the face offset by r, or the corner's circle",
-          "[blocks][lecture3]") {
+TEST_CASE("blocks: a block against a circle hits the face offset by r, or the corner's circle", "[blocks][lecture3]") {
     // Face: the block's right face (x = 0.5) meets a ball of r = 0.25 at x = 2 when the block has moved 1.25.
     const auto face = blockCircleCollision({{0.0, 0.0}, {2.5, 0.0}, {0.5, 0.5}}, {2.0, 0.3}, 0.25, 1.0);
     REQUIRE(face);

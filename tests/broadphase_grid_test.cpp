@@ -31,7 +31,8 @@ struct Scene {
 BoundingBox around(Vec2 c, double reach) { return {c - Vec2{reach, reach}, c + Vec2{reach, reach}}; }
 
 BoundingBox merged(const BoundingBox& a, const BoundingBox& b) {
-    return {{std::min(a.min.x, b.min.x), std::min(a.min.y, b.min.y)}, {std::max(a.max.x, b.max.x), std::max(a.max.y, b.max.y)}};
+    return {{std::min(a.min.x, b.min.x), std::min(a.min.y, b.min.y)},
+            {std::max(a.max.x, b.max.x), std::max(a.max.y, b.max.y)}};
 }
 
 /// The box of a segment's swept capsule, as the solver gives it (its four end positions fattened by its reach).
@@ -116,7 +117,9 @@ Scene randomScene(std::mt19937_64& rng, int circles, int segments) {
         const bool dynamic = unit(rng) < 0.7;
         const BoundingBox contact = around(c, r + uniform(0.0, 0.5) * r);
         Vec2 move{};
-        if (dynamic) move = Vec2{uniform(-1.0, 1.0), uniform(-1.0, 1.0)} * (unit(rng) < 0.1 ? uniform(2.0, 8.0) : uniform(0.0, 0.3));
+        if (dynamic)
+            move = Vec2{uniform(-1.0, 1.0), uniform(-1.0, 1.0)} *
+                   (unit(rng) < 0.1 ? uniform(2.0, 8.0) : uniform(0.0, 0.3));
         const BoundingBox end = around(c + move, r);
         s.circleBoxes.push_back(contact);
         s.filingBoxes.push_back(merged(contact, end));
@@ -150,7 +153,8 @@ double typicalCellSize(const Scene& s) {
     int n = 0;
     for (std::size_t i = 0; i < s.filingBoxes.size(); ++i) {
         if (!s.isDynamic[i]) continue;
-        sum += std::max(s.filingBoxes[i].max.x - s.filingBoxes[i].min.x, s.filingBoxes[i].max.y - s.filingBoxes[i].min.y);
+        sum += std::max(s.filingBoxes[i].max.x - s.filingBoxes[i].min.x,
+                        s.filingBoxes[i].max.y - s.filingBoxes[i].min.y);
         ++n;
     }
     return 1.1 * sum / std::max(n, 1);
@@ -211,7 +215,7 @@ void checkPairs(const Scene& s, BroadphaseGrid& grid) {
     for (const CandidatePair& p : pairs) {
         INFO("pair " << p.circle << " " << p.other);
         CHECK(found.insert({p.circle, p.other}).second); // each pair once
-        CHECK(may.count({p.circle, p.other}) == 1);       // boxes overlap, in the documented order
+        CHECK(may.count({p.circle, p.other}) == 1);      // boxes overlap, in the documented order
     }
     int missing = 0;
     for (const auto& pair : must)
@@ -276,7 +280,8 @@ TEST_CASE("a grid query lists every shape filed near the box, each once", "[solv
             for (std::size_t i = 0; i < s.filingBoxes.size(); ++i)
                 if (s.filingBoxes[i].overlaps(box)) CHECK(circleSet.count(static_cast<int>(i)) == 1);
             for (std::size_t k = 0; k < s.segments.size(); ++k)
-                if (sweptCapsuleBoxDistance(s.segments[k], box) < -1e-9) CHECK(segmentSet.count(static_cast<int>(k)) == 1);
+                if (sweptCapsuleBoxDistance(s.segments[k], box) < -1e-9)
+                    CHECK(segmentSet.count(static_cast<int>(k)) == 1);
         }
         CHECK(answered > 10);
     }

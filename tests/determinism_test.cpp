@@ -60,8 +60,7 @@ TEST_CASE("every scene reaches its recorded state hash", "[determinism]") {
     const bool print = std::getenv("RUBE_PRINT_HASHES") != nullptr;
     for (const Expected& e : kExpected) {
         const std::uint64_t hash = runAndHash(e);
-        if (print)
-            std::printf("    {\"%s\", \"%s\", %d, 0x%016" PRIx64 "ull},\n", e.scene, e.method, e.steps, hash);
+        if (print) std::printf("    {\"%s\", \"%s\", %d, 0x%016" PRIx64 "ull},\n", e.scene, e.method, e.steps, hash);
         INFO(e.scene << " " << (*e.method ? e.method : "(own method)") << " after " << e.steps << " steps");
         CHECK(hash == e.hash);
     }

@@ -10,8 +10,8 @@
 #include <cmath>
 
 using namespace rube;
-using rube::test::line;
 using rube::test::ball;
+using rube::test::line;
 
 namespace {
 

@@ -35,11 +35,11 @@ TEST_CASE("explosion: exactly the bodies within the radius are pushed", "[explos
     const Explosion e = blast();
     const Vec2 c = e.centre;
     std::vector<Circle> circles{
-        circleAt(c + Vec2{1, 0}),              // 0: well inside
-        circleAt(c + Vec2{0, 4.0 * 0.999}),    // 1: just inside
-        circleAt(c + Vec2{-4.0 * 1.001, 0}),   // 2: just outside
-        circleAt(c + Vec2{2.4, 3.2}),          // 3: exactly at the edge, |(2.4, 3.2)| = 4
-        circleAt(c + Vec2{10, -10}),           // 4: far away
+        circleAt(c + Vec2{1, 0}),                             // 0: well inside
+        circleAt(c + Vec2{0, 4.0 * 0.999}),                   // 1: just inside
+        circleAt(c + Vec2{-4.0 * 1.001, 0}),                  // 2: just outside
+        circleAt(c + Vec2{2.4, 3.2}),                         // 3: exactly at the edge, |(2.4, 3.2)| = 4
+        circleAt(c + Vec2{10, -10}),                          // 4: far away
         circleAt(c + Vec2{0.5, 0.5}, 1.0, Motion::kinematic), // 5: infinite mass
         circleAt(c + Vec2{-0.5, 0}, 1.0, Motion::fixed),      // 6: infinite mass
     };

@@ -47,11 +47,13 @@ TEST_CASE("failures: exact, solver and turn-based never tunnel at any speed test
     }
 }
 
-TEST_CASE("failures: the table's first tunnelling speed for discrete is the first value tried past 2r", "[failures][table]") {
+TEST_CASE("failures: the table's first tunnelling speed for discrete is the first value tried past 2r",
+          "[failures][table]") {
     const auto axes = bench::failures::failureAxes();
     const auto& speeds = axes.front().values;
     REQUIRE(axes.front().name == "speed x dt / r");
-    const double firstPast = *std::find_if(speeds.begin(), speeds.end(), [](double v) { return v > kThinLineThreshold; });
+    const double firstPast = *std::find_if(speeds.begin(), speeds.end(),
+                                           [](double v) { return v > kThinLineThreshold; });
 
     const bench::failures::Sweep sweep = bench::failures::runSweep(false);
     REQUIRE(sweep.methods.front() == Method::discrete);
@@ -66,7 +68,8 @@ TEST_CASE("failures: the table's first tunnelling speed for discrete is the firs
     }
 }
 
-TEST_CASE("failures: the exact method never gains energy with C <= 1 and keeps a tall stack apart", "[failures][exact]") {
+TEST_CASE("failures: the exact method never gains energy with C <= 1 and keeps a tall stack apart",
+          "[failures][exact]") {
     // Lecture 3: v' = u - C (v - u) with C <= 1 can only lose kinetic energy, and motion under gravity
     // is integrated exactly, so no drop of any bounciness may end with more energy than it began with.
     for (const double c : {0.0, 0.5, 0.9, 1.0}) {
@@ -81,7 +84,8 @@ TEST_CASE("failures: the exact method never gains energy with C <= 1 and keeps a
     CHECK(stack.deepestOverlap < 1e-9);
 }
 
-TEST_CASE("failures: a probe reports what it sees: a discrete stack ends its steps overlapping", "[failures][discrete]") {
+TEST_CASE("failures: a probe reports what it sees: a discrete stack ends its steps overlapping",
+          "[failures][discrete]") {
     // The discrete method moves every ball under gravity, then pushes each overlap apart once, in
     // index order: pushing a pair apart sends the lower ball back into the floor, and no second pass
     // looks again, so a stack of two or more ends each step overlapping (5 to 6 % of r at dt = 1/60).

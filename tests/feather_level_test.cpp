@@ -44,7 +44,8 @@ SceneDesc withoutAir(SceneDesc level) {
 
 } // namespace
 
-TEST_CASE("feather: the thrown ball follows the exact solution under drag and sinks at v_t = m g / (2r linear)", "[level][fields][drag]") {
+TEST_CASE("feather: the thrown ball follows the exact solution under drag and sinks at v_t = m g / (2r linear)",
+          "[level][fields][drag]") {
     const SceneDesc level = loadFeather();
     REQUIRE(level.world.method == Method::automatic); // the level's default: what a player gets
     LevelRun run(level, {});

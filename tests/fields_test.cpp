@@ -106,8 +106,10 @@ TEST_CASE("fields: a ball in a fan's wind approaches the air's speed as u + (v0 
     SECTION("outside the region, or with the fan off, nothing happens") {
         World still = openWorld(Method::exact, {0.0, 0.0});
         addBall(still, 1.0);
-        still.fields().winds.push_back(Wind{{1, 0}, {1, 0}, 5, 4, 3.0, 0.5});   // blows away from the ball: behind the fan
-        still.fields().winds.push_back(Wind{{-1, 2}, {1, 0}, 5, 3.9, 3.0, 0.5}); // the ball is 2 m off the axis, outside a 3.9 m column
+        still.fields().winds.push_back(
+            Wind{{1, 0}, {1, 0}, 5, 4, 3.0, 0.5}); // blows away from the ball: behind the fan
+        still.fields().winds.push_back(
+            Wind{{-1, 2}, {1, 0}, 5, 3.9, 3.0, 0.5}); // the ball is 2 m off the axis, outside a 3.9 m column
         still.fields().winds.push_back(Wind{{-9, 0}, {1, 0}, 20, 9, 3.0, 0.5, false}); // switched off
         for (int i = 0; i < 30; ++i) still.step();
         CHECK(still.circles()[0].velocity == Vec2{});

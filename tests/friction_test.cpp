@@ -104,7 +104,8 @@ TEST_CASE("friction: a disc set sliding on a floor ends rolling at two thirds of
     CHECK(c.angularVelocity == Approx(-c.velocity.x / r).epsilon(0.01));
 }
 
-TEST_CASE("friction: a spinning disc set down on a floor rolls off at the speed theory predicts", "[friction][rolling]") {
+TEST_CASE("friction: a spinning disc set down on a floor rolls off at the speed theory predicts",
+          "[friction][rolling]") {
     // Backspin and forward speed: L about the contact point is I omega0 - m r v0 (omega counter-clockwise),
     // and rolling at v needs omega = -v / r, so v = (m r v0 - I omega0) / (I / r + m r) = (2/3)(v0 - r omega0 / 2).
     const double r = 0.4, v0 = 2.0, omega0 = 30.0;
@@ -158,5 +159,5 @@ TEST_CASE("friction: a ball set down on a conveyor is carried at a third of the 
     const Circle& c = world.circles()[ball];
     CHECK(c.velocity.x == Approx(u / 3.0).epsilon(0.01));
     CHECK(c.velocity.x + c.angularVelocity * r == Approx(u).epsilon(0.01)); // the contact point moves with the belt
-    CHECK(world.segments()[0].a == Vec2{-100, 0}); // the belt itself stays where it is
+    CHECK(world.segments()[0].a == Vec2{-100, 0});                          // the belt itself stays where it is
 }

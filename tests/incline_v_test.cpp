@@ -113,7 +113,8 @@ TEST_CASE("exact: a ball dropped into a V comes to rest touching both lines", "[
     for (int degrees = 5; degrees <= 80; degrees += 5) {
         for (const double bounciness : {0.0, 0.3, 0.6, 0.9}) {
             for (const double offset : {0.0, 0.1, 0.3}) {
-                INFO("half-angle " << degrees << " degrees, C = " << bounciness << ", offset " << offset << " of the room");
+                INFO("half-angle " << degrees << " degrees, C = " << bounciness << ", offset " << offset
+                                   << " of the room");
                 const double halfAngle = degrees * kPi / 180.0;
                 World world = makeWorld(Method::exact);
                 addV(world, halfAngle, bounciness);

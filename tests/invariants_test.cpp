@@ -46,14 +46,16 @@ World randomBox(Random& random, Method method) {
     def.bounds = {{-kHalfWidth - 1.0, -1.0}, {kHalfWidth + 1.0, kHeight + 1.0}};
     World world(def);
     const Vec2 corners[] = {{-kHalfWidth, 0}, {kHalfWidth, 0}, {kHalfWidth, kHeight}, {-kHalfWidth, kHeight}};
-    for (int i = 0; i < 4; ++i) world.addSegment({corners[i], corners[(i + 1) % 4], kWall, {random.uniform(0.0, 1.0), 0.0}, -1});
+    for (int i = 0; i < 4; ++i)
+        world.addSegment({corners[i], corners[(i + 1) % 4], kWall, {random.uniform(0.0, 1.0), 0.0}, -1});
     const int count = random.integer(1, 5);
     std::vector<CircleDef> placed;
     for (int attempt = 0; attempt < 50 && static_cast<int>(placed.size()) < count; ++attempt) {
         CircleDef ball;
         ball.radius = random.uniform(0.1, 0.4);
         const double margin = ball.radius + kWall + 0.01;
-        ball.position = {random.uniform(-kHalfWidth + margin, kHalfWidth - margin), random.uniform(margin, kHeight - margin)};
+        ball.position = {random.uniform(-kHalfWidth + margin, kHalfWidth - margin),
+                         random.uniform(margin, kHeight - margin)};
         ball.velocity = Vec2::fromAngle(random.uniform(0.0, 6.283185307179586)) * random.uniform(0.0, 5.0);
         ball.mass = random.uniform(0.1, 5.0);
         ball.material = {random.uniform(0.0, 1.0), random.uniform(0.0, 0.8)};
@@ -91,7 +93,8 @@ TEST_CASE("invariants: 10,000 random boxes per method stay finite, closed and wi
             for (int step = 0; step < 30; ++step) {
                 world.step();
                 for (const Circle& c : world.circles()) {
-                    if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angularVelocity)) ++nonFinite;
+                    if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angularVelocity))
+                        ++nonFinite;
                     else if (!insideBox(c)) ++escapes;
                 }
             }
@@ -122,7 +125,8 @@ TEST_CASE("invariants: momentum is kept in 10,000 isolated two-ball collisions p
             a.material = {random.uniform(0.0, 1.0), random.uniform(0.0, 1.0)};
             b.material = {random.uniform(0.0, 1.0), random.uniform(0.0, 1.0)};
             // b ahead of a, offset sideways by less than the sum of radii: they meet within the run.
-            b.position = {a.radius + b.radius + random.uniform(0.1, 2.0), random.uniform(-0.9, 0.9) * (a.radius + b.radius)};
+            b.position = {a.radius + b.radius + random.uniform(0.1, 2.0),
+                          random.uniform(-0.9, 0.9) * (a.radius + b.radius)};
             a.velocity = {random.uniform(3.0, 20.0), random.uniform(-0.5, 0.5)};
             b.velocity = {random.uniform(-3.0, 1.0), random.uniform(-0.5, 0.5)};
             world.addCircle(a);
@@ -148,7 +152,8 @@ TEST_CASE("invariants: the exact method never gains energy with C <= 1 in 10,000
         const double start = energy(world);
         double scale = 1.0;
         for (const Circle& c : world.circles())
-            if (c.inverseMass > 0.0) scale += std::abs(0.5 * c.velocity.lengthSquared() / c.inverseMass) + 9.81 * kHeight / c.inverseMass;
+            if (c.inverseMass > 0.0)
+                scale += std::abs(0.5 * c.velocity.lengthSquared() / c.inverseMass) + 9.81 * kHeight / c.inverseMass;
         for (int step = 0; step < 30; ++step) {
             world.step();
             worstGain = std::max(worstGain, (energy(world) - start) / scale);

@@ -69,7 +69,8 @@ Ride ride(Method method, const KinematicPath& path, double r, double settle, dou
         // The platform's velocity over the step just taken.
         const Vec2 v = (path.offsetAt(world.time()) - path.offsetAt(world.time() - dt)) / dt;
         const double gap = gapAbove(c, s, thickness);
-        out.worstSpeedError = std::max({out.worstSpeedError, std::abs(c.velocity.x - v.x), std::abs(c.velocity.y - v.y)});
+        out.worstSpeedError = std::max(
+            {out.worstSpeedError, std::abs(c.velocity.x - v.x), std::abs(c.velocity.y - v.y)});
         out.worstVy = std::max(out.worstVy, std::abs(c.velocity.y - v.y));
         out.worstSink = std::max(out.worstSink, -gap);
         out.worstLift = std::max(out.worstLift, gap);
@@ -88,8 +89,8 @@ KinematicPath slide(double speed) {
 KinematicPath lift(double speed, double turn) {
     KinematicPath path;
     path.loop = true;
-    const double turnTime = 2.0 * speed / turn;   // from +speed to -speed
-    const double cruise = 1.5 / speed;            // the constant-speed part of each leg
+    const double turnTime = 2.0 * speed / turn; // from +speed to -speed
+    const double cruise = 1.5 / speed;          // the constant-speed part of each leg
     const int turnSteps = static_cast<int>(std::lround(turnTime / dt));
     double t = 0.0, y = 0.0;
     const auto key = [&] { path.keys.push_back(PathKey{t, {0.0, y}}); };
@@ -145,8 +146,9 @@ constexpr Method kMethods[] = {Method::discrete, Method::turnBased, Method::exac
 
 } // namespace
 
-TEST_CASE("kinematic: a ball on a platform sliding at constant speed is carried at its speed, without jitter or sinking",
-          "[kinematic][platform]") {
+TEST_CASE(
+    "kinematic: a ball on a platform sliding at constant speed is carried at its speed, without jitter or sinking",
+    "[kinematic][platform]") {
     // Under the methods without friction (all but the solver, and auto in frictionless steps) it is
     // carried only because it starts at the platform's speed: nothing acts on it along the platform.
     const double u = 1.5, r = 0.25;
@@ -160,8 +162,9 @@ TEST_CASE("kinematic: a ball on a platform sliding at constant speed is carried 
     }
 }
 
-TEST_CASE("kinematic: a lift going up and down at constant speed carries a resting ball without sinking or throwing it off",
-          "[kinematic][lift]") {
+TEST_CASE(
+    "kinematic: a lift going up and down at constant speed carries a resting ball without sinking or throwing it off",
+    "[kinematic][lift]") {
     const double r = 0.25;
     for (const Method method : kMethods) {
         INFO("method " << methodName(method));
@@ -198,9 +201,11 @@ TEST_CASE("kinematic: a paddle that strikes at its tip sends the ball faster tha
     CHECK(far.velocity.length() == Approx(2.0 * near.velocity.length()).epsilon(0.02));
 }
 
-TEST_CASE("kinematic: a turning path turns a segment about its pivot and holds after the last key", "[kinematic][path]") {
+TEST_CASE("kinematic: a turning path turns a segment about its pivot and holds after the last key",
+          "[kinematic][path]") {
     World world = worldWith(Method::exact);
-    const int p = world.addPath(KinematicPath{{PathKey{0.0, {}, 0.0}, PathKey{1.0, {1.0, 0.0}, std::acos(-1.0) / 2}}, false});
+    const int p = world.addPath(
+        KinematicPath{{PathKey{0.0, {}, 0.0}, PathKey{1.0, {1.0, 0.0}, std::acos(-1.0) / 2}}, false});
     SegmentDef paddle;
     paddle.a = {-1.0, 0.0};
     paddle.b = {1.0, 0.0};
@@ -225,8 +230,8 @@ TEST_CASE("kinematic: figures under every method", "[.][report]") {
                     slideRide.worstSink, slideRide.worstLift, liftRide.worstVy, liftRide.worstSink, liftRide.worstLift);
         for (const double c : {0.0, 0.5, 1.0}) {
             const Stroke s = stroke(method, 3.0, 1.0, 0.2, c);
-            std::printf("           paddle C %.1f: speed %.5f expected %.5f (error %.3g %%), direction (%.4f, %.4f)\n", c,
-                        s.velocity.length(), s.expected, 100.0 * (s.velocity.length() / s.expected - 1.0),
+            std::printf("           paddle C %.1f: speed %.5f expected %.5f (error %.3g %%), direction (%.4f, %.4f)\n",
+                        c, s.velocity.length(), s.expected, 100.0 * (s.velocity.length() / s.expected - 1.0),
                         s.velocity.x / s.velocity.length(), s.velocity.y / s.velocity.length());
         }
     }

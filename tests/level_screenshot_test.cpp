@@ -34,9 +34,10 @@ render::Renderer& renderer() {
 void check(const LevelRun& run, const LevelView& view, const std::string& level) {
     render::DrawList list;
     view.draw(run, run.frame(), list);
-    const auto golden = std::filesystem::path(RUBE_SCREENSHOTS_DIR) / render::goldenFileName(level, static_cast<int>(run.frame()));
-    const render::ScreenshotCheck result =
-        render::checkScreenshot(renderer().render(list, view.camera()), golden, RUBE_SCREENSHOT_FAILURES_DIR);
+    const auto golden = std::filesystem::path(RUBE_SCREENSHOTS_DIR) /
+                        render::goldenFileName(level, static_cast<int>(run.frame()));
+    const render::ScreenshotCheck result = render::checkScreenshot(renderer().render(list, view.camera()), golden,
+                                                                   RUBE_SCREENSHOT_FAILURES_DIR);
     INFO(result.message);
     CHECK(result.passed);
 }
@@ -72,7 +73,8 @@ TEST_CASE("every level: first and goal frames", "[screenshot][level]") {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
         const std::string file = entry.path().filename().string();
-        if (file.ends_with(".solution.toml")) names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
+        if (file.ends_with(".solution.toml"))
+            names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
     }
     std::sort(names.begin(), names.end());
     REQUIRE(names.size() >= 16);

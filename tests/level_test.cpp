@@ -26,7 +26,8 @@ std::vector<std::string> solvedLevels() {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
         const std::string file = entry.path().filename().string();
-        if (file.ends_with(".solution.toml")) names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
+        if (file.ends_with(".solution.toml"))
+            names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
     }
     std::sort(names.begin(), names.end());
     return names;
@@ -71,7 +72,8 @@ TEST_CASE("each level's solution reaches the goal, and the level as it stands do
     for (const std::string& name : levels) {
         INFO(name);
         const SceneDesc level = loadLevel(name);
-        const ScriptLoad script = loadScriptFile(std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".solution.toml"), level);
+        const ScriptLoad script = loadScriptFile(
+            std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".solution.toml"), level);
         INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
         REQUIRE(script.script);
         REQUIRE(level.level.goal->timeLimit);
@@ -88,19 +90,24 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
     // The whole catalogue, in its order: today's kinds first, any later kind after them.
     std::string catalogue;
     for (ItemKind kind : allPartKinds()) catalogue += (catalogue.empty() ? "" : ", ") + std::string(kind->name());
-    CHECK(catalogue.starts_with("heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, switch, magnet, fan, rocket"));
+    CHECK(catalogue.starts_with("heavy, bouncy, steel, balloon, plank, ramp, bumper, cannon, bomb, target, bucket, "
+                                "switch, magnet, fan, rocket"));
     CHECK(firstError(floor + "[[item]]\nkind = \"cannnon\"\nposition = [0, 1]\n") ==
           "t.toml:6:8: kind must be one of " + catalogue + ", got 'cannnon' (did you mean 'cannon'?)");
-    CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
+    CHECK(firstError(floor + "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0, 1]\n[goal]\ntext = "
+                             "\"x\"\ncondition = \"target-hit\"\ntarget = \"U\"\n") ==
           "t.toml:12:10: unknown target 'U' (the level has: T)");
     CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
-          "t.toml:8:12: unknown cannon, bomb, fan, magnet, rocket or rope 'gun' (the level has no cannon, bomb, fan, magnet, rocket or rope)");
+          "t.toml:8:12: unknown cannon, bomb, fan, magnet, rocket or rope 'gun' (the level has no cannon, bomb, fan, "
+          "magnet, rocket or rope)");
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
           "t.toml:8:12: strength must be greater than 0 and at most 10000, got -2");
     CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
     CHECK(firstError(floor + "[inventory]\ncannon = 1\n") ==
-          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb, magnet, fan, rocket)");
-    CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = \"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
+          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, "
+          "balloon, plank, ramp, bumper, bomb, magnet, fan, rocket)");
+    CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = "
+                             "\"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
           "t.toml:11:8: the name 'a' is already used at line 6");
 }
 
@@ -111,12 +118,14 @@ TEST_CASE("placements are refused by rule and place", "[level]") {
         return r ? r->message : std::string("accepted");
     };
     CHECK(refusal({{partKind("ramp"), {-4.5, 2.5}, -0.5, "", {}}}) == "accepted");
-    CHECK(refusal({{partKind("plank"), {-4.5, 2.5}, 0.0, "", {}}}) ==
-          "placement refused: plank at [-4.5, 2.5] exceeds the inventory: the level gives 0 planks and this is number 1");
-    CHECK(refusal({{partKind("ramp"), {-4.5, 2.5}, 0.0, "", {}}, {partKind("ramp"), {-4.5, 3.5}, 0.0, "", {}}}).starts_with(
-        "placement refused: ramp at [-4.5, 3.5] exceeds the inventory"));
+    CHECK(
+        refusal({{partKind("plank"), {-4.5, 2.5}, 0.0, "", {}}}) ==
+        "placement refused: plank at [-4.5, 2.5] exceeds the inventory: the level gives 0 planks and this is number 1");
+    CHECK(refusal({{partKind("ramp"), {-4.5, 2.5}, 0.0, "", {}}, {partKind("ramp"), {-4.5, 3.5}, 0.0, "", {}}})
+              .starts_with("placement refused: ramp at [-4.5, 3.5] exceeds the inventory"));
     CHECK(refusal({{partKind("ramp"), {3, 2.5}, 0.0, "", {}}}) ==
-          "placement refused: ramp at [3, 2.5] is not wholly inside a placement zone (it spans [1.45, 2.45] to [4.55, 2.55])");
+          "placement refused: ramp at [3, 2.5] is not wholly inside a placement zone (it spans [1.45, 2.45] to [4.55, "
+          "2.55])");
     // Overlaps: with a fixed part inside the zone, and with an earlier placement.
     const SceneDesc crowded = parseLevel("name = \"c\"\n[[item]]\nkind = \"bumper\"\nposition = [0, 0]\n"
                                          "[inventory]\nheavy = 2\n[[zone]]\nmin = [-3, -3]\nmax = [3, 3]\n");
@@ -132,9 +141,10 @@ TEST_CASE("placements are refused by rule and place", "[level]") {
 }
 
 TEST_CASE("an aimed gravity shot passes within 1 % of the ball's radius of the aimed point", "[level][aim]") {
-    SceneDesc level = parseLevel("name = \"aim\"\n[world]\ntime_step = 0.01\n[[item]]\nkind = \"cannon\"\nname = \"gun\"\n"
-                                 "position = [0, 0]\nspeed = 12\nammo = \"steel\"\n[goal]\ntext = \"x\"\ncondition = \"all-targets\"\n"
-                                 "[[item]]\nkind = \"target\"\nname = \"far\"\nposition = [100, 100]\n");
+    SceneDesc level = parseLevel(
+        "name = \"aim\"\n[world]\ntime_step = 0.01\n[[item]]\nkind = \"cannon\"\nname = \"gun\"\n"
+        "position = [0, 0]\nspeed = 12\nammo = \"steel\"\n[goal]\ntext = \"x\"\ncondition = \"all-targets\"\n"
+        "[[item]]\nkind = \"target\"\nname = \"far\"\nposition = [100, 100]\n");
     for (const bool high : {false, true}) {
         LevelRun run(level, {});
         const Vec2 aimed{9.0, 2.5};
@@ -174,13 +184,15 @@ TEST_CASE("a led shot hits a target moving at constant velocity", "[level][aim]"
 }
 
 TEST_CASE("a bomb pushes only the bodies within its blast radius", "[level][explosion]") {
-    const SceneDesc level = parseLevel("name = \"b\"\n[world]\ngravity = [0, 0]\n[[item]]\nkind = \"bomb\"\nname = \"B\"\n"
-                                       "position = [0, 0]\nblast_radius = 2\nstrength = 4\n[[item]]\nkind = \"steel\"\nposition = [1, 0]\n"
-                                       "[[item]]\nkind = \"steel\"\nposition = [3, 0]\n");
+    const SceneDesc level = parseLevel(
+        "name = \"b\"\n[world]\ngravity = [0, 0]\n[[item]]\nkind = \"bomb\"\nname = \"B\"\n"
+        "position = [0, 0]\nblast_radius = 2\nstrength = 4\n[[item]]\nkind = \"steel\"\nposition = [1, 0]\n"
+        "[[item]]\nkind = \"steel\"\nposition = [3, 0]\n");
     LevelRun run(level, {});
     const CircleId casing = run.states()[0].circle;
     run.detonate(run.find("B"));
-    CHECK(run.world().circle(run.states()[1].circle).velocity.x == Approx(4.0 * 0.5 / 4.0)); // J = 4 (1 - 1/2), m = 4 kg
+    CHECK(run.world().circle(run.states()[1].circle).velocity.x ==
+          Approx(4.0 * 0.5 / 4.0)); // J = 4 (1 - 1/2), m = 4 kg
     CHECK(run.world().circle(run.states()[2].circle).velocity == Vec2{});
     // The casing is gone from the world, and its handle says so.
     CHECK(run.world().circles().size() == 2);
@@ -271,7 +283,8 @@ TEST_CASE("fire-when times a fixed-angle shot so that it hits a moving target", 
         return play(level, *load.script, 600);
     };
     // The barrel stays at the level's 45 degrees: only the moment of firing is chosen.
-    const LevelRun timed = playScript("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n");
+    const LevelRun timed = playScript(
+        "[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n");
     REQUIRE(timed.goalFrame());
     REQUIRE(timed.events().front().kind == EventKind::shot);
     CHECK(timed.events().front().frame > 100); // it waited for the runner to come near the arc
@@ -283,7 +296,8 @@ TEST_CASE("fire-when times a fixed-angle shot so that it hits a moving target", 
     // Aimed level and away from it, no timing can meet the runner: a reason, not a shot.
     LevelRun run(level, {});
     run.aim(run.find("gun"), std::numbers::pi);
-    CHECK(run.fireWhen(run.find("gun"), run.find("runner")).starts_with("cannon 'gun' cannot time a shot at 'runner' at its aim: "));
+    CHECK(run.fireWhen(run.find("gun"), run.find("runner"))
+              .starts_with("cannon 'gun' cannot time a shot at 'runner' at its aim: "));
     CHECK(run.events().empty());
 }
 
@@ -296,15 +310,19 @@ TEST_CASE("fire-when names a cannon and a target", "[level]") {
     CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\n") ==
           "s.toml:2:1: missing required key 'target' in [[action]]");
     CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runer\"\n") ==
-          "s.toml:6:10: unknown target, bomb, switch or bucket 'runer' in level 'moving-target' (did you mean 'runner'?)");
-    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
+          "s.toml:6:10: unknown target, bomb, switch or bucket 'runer' in level 'moving-target' (did you mean "
+          "'runner'?)");
+    CHECK(firstScriptError(
+              "[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
           "s.toml:7:1: unknown key 'arc' in [[action]] (known keys: frame, do, item, target)");
 }
 
 TEST_CASE("levels and scripts word a bad reference alike", "[level]") {
     const std::string floor = "name = \"t\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n";
-    CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nname = \"B\"\nposition = [0, 1]\n[[item]]\nkind = \"target\"\nname = \"T\"\n"
-                             "position = [2, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"B\"\n") ==
+    CHECK(firstError(
+              floor +
+              "[[item]]\nkind = \"bomb\"\nname = \"B\"\nposition = [0, 1]\n[[item]]\nkind = \"target\"\nname = \"T\"\n"
+              "position = [2, 1]\n[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"B\"\n") ==
           "t.toml:16:10: target 'B' is a bomb, not a target (the level has: T)");
     const SceneDesc level = loadLevel("moving-target");
     const auto scriptError = [&](const std::string& text) {
@@ -346,12 +364,14 @@ TEST_CASE("rope: the switch cuts the rope, too early or too late and the ball mi
 
 TEST_CASE("rope: a script cuts a rope by name, an unknown rope is an error at its place", "[level][rope]") {
     const SceneDesc level = loadLevel("rope");
-    const ScriptLoad ok = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rope\"\n", "s.toml", level);
+    const ScriptLoad ok = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rope\"\n",
+                                      "s.toml", level);
     REQUIRE(ok.script);
     LevelRun run = play(level, *ok.script, 480);
     CHECK(run.world().ropes()[0].cut);
     CHECK(run.goalFrame()); // cut at the same moment the switch would: the same throw
-    const ScriptLoad bad = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rpoe\"\n", "s.toml", level);
+    const ScriptLoad bad = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rpoe\"\n",
+                                       "s.toml", level);
     REQUIRE(bad.errors.size() == 1);
     CHECK(bad.errors[0].format() == "s.toml:5:8: unknown rope 'rpoe' in level 'rope' (did you mean 'rope'?)");
 }
@@ -366,7 +386,8 @@ TEST_CASE("rope: a switch may name a rope, a name that is neither item nor rope 
           "t.toml:13:12: unknown cannon, bomb, fan, magnet, rocket or rope 'lnie' (did you mean 'line'?)");
 }
 
-TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never turns never throws the wheel", "[level][kinematic]") {
+TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never turns never throws the wheel",
+          "[level][kinematic]") {
     const auto placed = [](double angle) {
         return std::vector<Placement>{{partKind("ramp"), {-0.8, 2.4}, angle * std::numbers::pi / 180.0, "", {}}};
     };
@@ -385,16 +406,17 @@ TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never
     CHECK_FALSE(run(level, placed(-15.0)).goalFrame());
 }
 
-TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, the dominoes fall in turn", "[level][seesaw]") {
+TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, the dominoes fall in turn",
+          "[level][seesaw]") {
     const SceneDesc level = loadLevel("seesaw");
     REQUIRE(level.world.method == Method::automatic);
     // Bodies: 0 the plank, 1 the box on its right end, 2..6 the dominoes (file order); circles:
     // 0 the marble, 1 the striker, 2 the placed heavy ball.
     struct Played {
         std::optional<std::int64_t> goal;
-        double plankAngle = 0.0;               // at the end, counter-clockwise
-        std::array<int, 5> fellAt{};           // the step each domino passed 45 degrees leftwards (-1: never)
-        double heavyLeftmost = 1e9;            // the heavy ball's smallest x
+        double plankAngle = 0.0;     // at the end, counter-clockwise
+        std::array<int, 5> fellAt{}; // the step each domino passed 45 degrees leftwards (-1: never)
+        double heavyLeftmost = 1e9;  // the heavy ball's smallest x
     };
     const auto playFrom = [&](std::optional<double> x) {
         std::vector<Placement> drop;
@@ -406,7 +428,8 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
         for (int i = 0; i < 480; ++i) {
             run.step();
             for (std::size_t d = 0; d < 5; ++d)
-                if (played.fellAt[d] < 0 && run.world().bodies()[d + 2].angle > std::numbers::pi / 4.0) played.fellAt[d] = i + 1;
+                if (played.fellAt[d] < 0 && run.world().bodies()[d + 2].angle > std::numbers::pi / 4.0)
+                    played.fellAt[d] = i + 1;
             if (x) played.heavyLeftmost = std::min(played.heavyLeftmost, run.world().circles()[2].position.x);
         }
         played.goal = run.goalFrame();
@@ -437,12 +460,15 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
     for (const int step : idle.fellAt) CHECK(step < 0);
 }
 
-TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too low or too high a drop misses", "[level][block]") {
+TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too low or too high a drop misses",
+          "[level][block]") {
     const SceneDesc level = loadLevel("crates");
     REQUIRE(level.world.method == Method::automatic);
     // Bodies: 0 the crate under the gate, 1 the last crate (4 kg each, C = 1); circles: 0 the flag
     // (C = 0.5), 1 the placed steel ball (4 kg, C = 0.7).
-    const auto drop = [](double x, double y) { return std::vector<Placement>{{partKind("steel"), {x, y}, 0.0, "", {}}}; };
+    const auto drop = [](double x, double y) {
+        return std::vector<Placement>{{partKind("steel"), {x, y}, 0.0, "", {}}};
+    };
     REQUIRE_FALSE(checkPlacements(level, drop(-4.5, 5.0)));
     LevelRun run(level, drop(-4.5, 5.0));
     REQUIRE(run.world().circles().size() == 2);
@@ -451,7 +477,7 @@ TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too 
     const double g = run.world().def().gravity.y;
     const auto vx = [](double mass1, double v1, double mass2, double v2, double c) {
         const double u = (mass1 * v1 + mass2 * v2) / (mass1 + mass2); // the centre of mass's velocity
-        return std::pair{u - c * (v1 - u), u - c * (v2 - u)};            // v' = u - C (v - u) on the axis
+        return std::pair{u - c * (v1 - u), u - c * (v2 - u)};         // v' = u - C (v - u) on the axis
     };
     int ballOnCrate = -1, crateOnCrate = -1, crateOnFlag = -1;
     double ballAtImpact = 0.0, crateAtImpact = 0.0, flagApproach = 0.0, ballRightmost = -1e9;
@@ -466,7 +492,8 @@ TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too 
         ballRightmost = std::max(ballRightmost, run.world().circles()[1].position.x);
         for (const Impact& impact : run.world().lastImpacts()) {
             if (impact.body < 0 || impact.approachSpeed < 0.5) continue; // resting contacts on the shelf
-            INFO("step " << i + 1 << " block " << impact.body << " normal " << impact.normal.x << " " << impact.normal.y);
+            INFO("step " << i + 1 << " block " << impact.body << " normal " << impact.normal.x << " "
+                         << impact.normal.y);
             if (impact.body == 0 && impact.otherKind == Other::circle && impact.other == 1) {
                 // The ball meets the crate's left face: x axis only; the shelf keeps both at vy = 0.
                 ballOnCrate = i + 1;
@@ -494,12 +521,14 @@ TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too 
                 flagApproach = impact.approachSpeed;
                 CHECK(impact.normal == Vec2{0.0, 1.0});
                 CHECK(last.x == lastBefore.x);
-                CHECK(last.y == Approx(0.5 * impact.approachSpeed + g * (run.world().time() - impact.time)).epsilon(1e-12));
+                CHECK(last.y ==
+                      Approx(0.5 * impact.approachSpeed + g * (run.world().time() - impact.time)).epsilon(1e-12));
             }
         }
     }
-    INFO("ball on crate at step " << ballOnCrate << " (" << ballAtImpact << " m/s), crate on crate at step " << crateOnCrate
-                                  << " (" << crateAtImpact << " m/s), crate on flag at step " << crateOnFlag << " (" << flagApproach << " m/s)");
+    INFO("ball on crate at step " << ballOnCrate << " (" << ballAtImpact << " m/s), crate on crate at step "
+                                  << crateOnCrate << " (" << crateAtImpact << " m/s), crate on flag at step "
+                                  << crateOnFlag << " (" << flagApproach << " m/s)");
     CHECK(ballOnCrate == 83);
     CHECK(crateOnCrate == 99);
     CHECK(crateOnFlag == 146);
@@ -524,11 +553,14 @@ TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too 
 TEST_CASE("a domino that tips onto a target marks it hit, one that stands does not", "[level][rigid]") {
     // A 0.1 x 0.5 m domino tilted past its critical angle atan(0.1 / 0.5) = 11.3 deg falls onto the target.
     const auto level = [](double tilt) {
-        return parseLevel("name = \"d\"\n[world]\nmethod = \"auto\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\nfriction = 0.6\n"
-                          "[[box]]\nname = \"domino\"\nposition = [0, 0.25]\nsize = [0.1, 0.5]\nmass = 0.2\nfriction = 0.6\n"
-                          "bounciness = 0\nangle_degrees = " + std::to_string(tilt) + "\n"
-                          "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0.7, 0.3]\n"
-                          "[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"T\"\n");
+        return parseLevel(
+            "name = \"d\"\n[world]\nmethod = \"auto\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\nfriction = 0.6\n"
+            "[[box]]\nname = \"domino\"\nposition = [0, 0.25]\nsize = [0.1, 0.5]\nmass = 0.2\nfriction = 0.6\n"
+            "bounciness = 0\nangle_degrees = " +
+            std::to_string(tilt) +
+            "\n"
+            "[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0.7, 0.3]\n"
+            "[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"T\"\n");
     };
     LevelRun falls(level(-20.0), {});
     for (int i = 0; i < 180; ++i) falls.step();
@@ -536,8 +568,9 @@ TEST_CASE("a domino that tips onto a target marks it hit, one that stands does n
     REQUIRE(falls.events().size() >= 1);
     CHECK(falls.events().front().kind == EventKind::hit);
     CHECK(falls.events().front().item == "T");
-    std::printf("domino onto a target: hit at frame %lld, point [%.3f, %.3f]\n", static_cast<long long>(falls.events().front().frame),
-                falls.events().front().position.x, falls.events().front().position.y);
+    std::printf("domino onto a target: hit at frame %lld, point [%.3f, %.3f]\n",
+                static_cast<long long>(falls.events().front().frame), falls.events().front().position.x,
+                falls.events().front().position.y);
     LevelRun stands(level(-5.0), {});
     for (int i = 0; i < 180; ++i) stands.step();
     CHECK_FALSE(stands.goalFrame());

@@ -22,7 +22,8 @@ double largestOverlap(const World& world) {
     double worst = 0.0;
     for (std::size_t i = 0; i < circles.size(); ++i)
         for (std::size_t j = i + 1; j < circles.size(); ++j) {
-            const double gap = circles[i].position.distance(circles[j].position) - circles[i].radius - circles[j].radius;
+            const double gap = circles[i].position.distance(circles[j].position) - circles[i].radius -
+                               circles[j].radius;
             worst = std::max(worst, -gap);
         }
     return worst;
@@ -47,12 +48,14 @@ void checkSettled(double minutes, double window) {
             for (const Circle& c : world.circles()) fastest = std::max(fastest, c.velocity.length());
     }
     double drift = 0.0;
-    for (std::size_t i = 0; i < before.size(); ++i) drift = std::max(drift, world.circles()[i].position.distance(before[i]));
+    for (std::size_t i = 0; i < before.size(); ++i)
+        drift = std::max(drift, world.circles()[i].position.distance(before[i]));
     const double overlap = largestOverlap(world);
-    WARN(minutes << " simulated minutes: largest drift over the last " << window << " min " << drift << " m, fastest ball "
-                 << fastest << " m/s, largest overlap " << overlap << " m, escapes " << world.stats().escapes);
-    CHECK(drift < 0.001);   // no creep: 1 mm over minutes
-    CHECK(fastest < 0.05);  // no explosion, no jitter worth the name
+    WARN(minutes << " simulated minutes: largest drift over the last " << window << " min " << drift
+                 << " m, fastest ball " << fastest << " m/s, largest overlap " << overlap << " m, escapes "
+                 << world.stats().escapes);
+    CHECK(drift < 0.001);  // no creep: 1 mm over minutes
+    CHECK(fastest < 0.05); // no explosion, no jitter worth the name
     CHECK(overlap <= 0.005);
     CHECK(world.stats().escapes == 0);
     CHECK_FALSE(world.stats().nonFinite);

@@ -20,14 +20,16 @@ std::string rowScene(int n, int k, const std::string& method) {
     if (!method.empty()) text += "[world]\nmethod = \"" + method + "\"\n";
     for (int i = 0; i < k; ++i)
         text += "[[segment]]\na = [-300, " + std::to_string(-i) + "]\nb = [300, " + std::to_string(-i) + "]\n";
-    text += "[[circle_grid]]\norigin = [-250, 1]\ncolumns = " + std::to_string(n) + "\nrows = 1\nspacing = 0.24\nradius = 0.1\n";
+    text += "[[circle_grid]]\norigin = [-250, 1]\ncolumns = " + std::to_string(n) +
+            "\nrows = 1\nspacing = 0.24\nradius = 0.1\n";
     return text;
 }
 
 } // namespace
 
-TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <= 2^22, no method means exact, else auto",
-          "[scene][budget]") {
+TEST_CASE(
+    "discrete, turn-based and exact take a scene exactly while n (n + k) <= 2^22, no method means exact, else auto",
+    "[scene][budget]") {
     for (const int k : {0, 1, 7}) {
         for (int n = 2030; n <= 2060; n += 3) {
             const std::int64_t pairs = std::int64_t{n} * (n + k);
@@ -44,7 +46,8 @@ TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <
                     CHECK(pairTestsPerSearch(*named.scene) == pairs);
                 }
             }
-            for (const std::string method : {"solver", "auto"}) CHECK(parseScene(rowScene(n, k, method), "s.toml").ok());
+            for (const std::string method : {"solver", "auto"})
+                CHECK(parseScene(rowScene(n, k, method), "s.toml").ok());
             const SceneLoad unnamed = parseScene(rowScene(n, k, ""), "s.toml");
             REQUIRE(unnamed.ok());
             CHECK(unnamed.scene->world.method == (affordable ? Method::exact : Method::automatic));
@@ -53,7 +56,8 @@ TEST_CASE("discrete, turn-based and exact take a scene exactly while n (n + k) <
 }
 
 TEST_CASE("an output folder has one holder at a time, the lock goes with its holder", "[frames][lock]") {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("rube-lock-test-" + std::to_string(::getpid()));
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                         ("rube-lock-test-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     {
         const OutFolderLock first(folder);
@@ -61,7 +65,8 @@ TEST_CASE("an output folder has one holder at a time, the lock goes with its hol
         for (int attempt = 0; attempt < 3; ++attempt) {
             const OutFolderLock second(folder); // flock is per open file: this process's second open conflicts too
             CHECK_FALSE(second.locked());
-            CHECK(second.why() == folder.string() + " is in use by another rube run (pid " + std::to_string(::getpid()) + ")");
+            CHECK(second.why() ==
+                  folder.string() + " is in use by another rube run (pid " + std::to_string(::getpid()) + ")");
         }
     }
     const OutFolderLock again(folder);

@@ -65,7 +65,7 @@ text = "hit the flag"
 condition = "target-hit"
 target = "flag"
 )",
-                                     "workshop.toml");
+                                      "workshop.toml");
     INFO((load.errors.empty() ? std::string() : load.errors.front().format()));
     REQUIRE(load.ok());
     return *load.scene;
@@ -128,7 +128,9 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
     // Outside every zone: refused with the rule's reason, and the plank is back in the bar.
     place(s, partKind("plank"), {6.0, 3.0});
     CHECK(s.placements().size() == 1);
-    CHECK_THAT(s.message(), Catch::StartsWith("not placed: placement refused: plank at [6, 3] is not wholly inside a placement zone"));
+    CHECK_THAT(
+        s.message(),
+        Catch::StartsWith("not placed: placement refused: plank at [6, 3] is not wholly inside a placement zone"));
     CHECK(s.remaining(partKind("plank")) == 1);
 
     // Onto the first plank: refused for the overlap.
@@ -284,7 +286,8 @@ TEST_CASE("play: a loaded solution plays to its goal and records an expectation 
 TEST_CASE("play: every kind of action a loaded script takes is recorded in the script's own words", "[play]") {
     // The rope is cut by a script action here, not by the switch: the recording must say "cut".
     const SceneDesc level = loadLevel("rope");
-    const ScriptLoad script = parseScript("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n", "cut.toml", level);
+    const ScriptLoad script = parseScript("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n",
+                                          "cut.toml", level);
     INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
     REQUIRE(script.script);
     PlaySession s(level, "rope.toml", kFrame);

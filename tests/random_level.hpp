@@ -18,7 +18,7 @@ namespace rube::test {
 /// A random play of one level: what the player placed and did.
 struct RandomPlay {
     std::vector<game::Placement> placements; ///< named "random-0", "random-1", ... so actions can name them
-    std::vector<game::Action> actions;        ///< sorted by frame
+    std::vector<game::Action> actions;       ///< sorted by frame
 };
 
 /// Placements of `level`'s inventory: each kind up to its count, each centre inside a random zone.
@@ -39,7 +39,8 @@ inline std::vector<game::Placement> randomPlacements(const game::SceneDesc& leve
                 p.angleDegrees = rng.chance(0.3) ? 0.0 : static_cast<double>(rng.below(360) - 180);
                 p.angle = game::scriptRadians(p.angleDegrees);
             }
-            const game::Zone& zone = level.level.zones[static_cast<std::size_t>(rng.below(static_cast<int>(level.level.zones.size())))];
+            const game::Zone& zone =
+                level.level.zones[static_cast<std::size_t>(rng.below(static_cast<int>(level.level.zones.size())))];
             Vec2 lo = zone.box.min, hi = zone.box.max;
             if (!rng.chance(0.2)) {
                 game::ItemDesc probe = game::defaultItem(p.kind, {});
@@ -64,8 +65,9 @@ inline std::vector<game::Placement> randomPlacements(const game::SceneDesc& leve
 /// Up to five actions at random steps before `steps` on the named items of the level and the
 /// placements that take them: cannons are aimed (an angle, a point, a target on either arc), fired
 /// or fired-when; bombs detonated; switches, fans, magnets and rockets toggled; named ropes cut.
-inline std::vector<game::Action> randomActions(const game::SceneDesc& level, const std::vector<game::Placement>& placements,
-                                               std::int64_t steps, SceneRng& rng) {
+inline std::vector<game::Action> randomActions(const game::SceneDesc& level,
+                                               const std::vector<game::Placement>& placements, std::int64_t steps,
+                                               SceneRng& rng) {
     using game::ActionKind;
     std::vector<game::ItemDesc> items = level.level.items;
     for (const game::Placement& p : placements) items.push_back(game::placedItem(p));
@@ -79,7 +81,9 @@ inline std::vector<game::Action> randomActions(const game::SceneDesc& level, con
     }
     for (const std::string& rope : level.ropeNames)
         if (!rope.empty()) ropes.push_back(rope);
-    const auto pick = [&](const std::vector<std::string>& names) { return names[static_cast<std::size_t>(rng.below(static_cast<int>(names.size())))]; };
+    const auto pick = [&](const std::vector<std::string>& names) {
+        return names[static_cast<std::size_t>(rng.below(static_cast<int>(names.size())))];
+    };
     std::vector<game::Action> actions;
     const int count = rng.below(6);
     for (int i = 0; i < count; ++i) {
@@ -98,7 +102,8 @@ inline std::vector<game::Action> randomActions(const game::SceneDesc& level, con
             case 1: {
                 a.kind = ActionKind::aim;
                 const Aabb& b = level.world.bounds;
-                a.point = Vec2{rng.in(std::max(b.min.x, -20.0), std::min(b.max.x, 20.0)), rng.in(std::max(b.min.y, -20.0), std::min(b.max.y, 20.0))};
+                a.point = Vec2{rng.in(std::max(b.min.x, -20.0), std::min(b.max.x, 20.0)),
+                               rng.in(std::max(b.min.y, -20.0), std::min(b.max.y, 20.0))};
                 a.highArc = rng.chance(0.5);
                 break;
             }
@@ -134,7 +139,8 @@ inline std::vector<game::Action> randomActions(const game::SceneDesc& level, con
         }
         actions.push_back(a);
     }
-    std::stable_sort(actions.begin(), actions.end(), [](const game::Action& x, const game::Action& y) { return x.frame < y.frame; });
+    std::stable_sort(actions.begin(), actions.end(),
+                     [](const game::Action& x, const game::Action& y) { return x.frame < y.frame; });
     return actions;
 }
 

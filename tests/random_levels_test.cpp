@@ -45,7 +45,8 @@ std::vector<SceneDesc> shippedLevels() {
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
         const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos) files.push_back(entry.path());
+        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos)
+            files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
     std::vector<SceneDesc> levels;
@@ -110,19 +111,25 @@ double speedBound(const SceneDesc& level, const std::vector<ItemDesc>& items, do
         const Aabb e = itemExtent(item);
         grow(e.min), grow(e.max);
         for (const CircleDef& c : itemBodies(item).circles)
-            if (c.motion == Motion::dynamic) lightest = std::min(lightest, c.mass), largest = std::max(largest, c.radius);
-        if (const auto shot = item.kind->shot(item)) lightest = std::min(lightest, shot->mass), largest = std::max(largest, shot->radius);
+            if (c.motion == Motion::dynamic)
+                lightest = std::min(lightest, c.mass), largest = std::max(largest, c.radius);
+        if (const auto shot = item.kind->shot(item))
+            lightest = std::min(lightest, shot->mass), largest = std::max(largest, shot->radius);
     }
     const double size = (extent.max - extent.min).length();
     double bound = speed + std::sqrt(2.0 * g * size) + g * seconds;
     for (const ItemDesc& item : items) bound += item.kind->speedGiven(item, lightest, g, seconds);
-    for (const Water& w : level.waters) bound += w.density * 3.14159265358979 * largest * largest / lightest * g * seconds;
+    for (const Water& w : level.waters)
+        bound += w.density * 3.14159265358979 * largest * largest / lightest * g * seconds;
     for (const NamedPath& named : level.paths) {
         const auto& keys = named.path.keys;
         for (std::size_t k = 1; k < keys.size(); ++k) {
             const double dt = keys[k].time - keys[k - 1].time;
             if (dt > 0.0)
-                bound += 2.0 * ((keys[k].offset - keys[k - 1].offset).length() + std::abs(keys[k].angle - keys[k - 1].angle) * size) / dt;
+                bound += 2.0 *
+                         ((keys[k].offset - keys[k - 1].offset).length() +
+                          std::abs(keys[k].angle - keys[k - 1].angle) * size) /
+                         dt;
         }
     }
     for (const SegmentDef& s : level.segments) bound += 2.0 * std::abs(s.surfaceSpeed);
@@ -130,20 +137,21 @@ double speedBound(const SceneDesc& level, const std::vector<ItemDesc>& items, do
 }
 
 struct Tally {
-    int plays = 0;            ///< seeds whose placements were accepted
-    int runs = 0;             ///< plays x methods that accept the level
-    int refused = 0;          ///< placement draws checkPlacements() refused
-    int skipped = 0;          ///< methods that cannot move the level's turning bodies (or over their budget)
+    int plays = 0;   ///< seeds whose placements were accepted
+    int runs = 0;    ///< plays x methods that accept the level
+    int refused = 0; ///< placement draws checkPlacements() refused
+    int skipped = 0; ///< methods that cannot move the level's turning bodies (or over their budget)
     int nonFinite = 0;
     int isolated = 0;
-    int declined = 0;         ///< actions the game declined (an aim out of reach, a shot no timing meets)
-    int turnBasedGains = 0;   ///< passive turn-based runs that gained energy (its known failure, README)
+    int declined = 0;       ///< actions the game declined (an aim out of reach, a shot no timing meets)
+    int turnBasedGains = 0; ///< passive turn-based runs that gained energy (its known failure, README)
     std::int64_t escapes = 0;
     std::int64_t clamps = 0;
     double worstSpeedRatio = 0.0; ///< the fastest body over its bound, over every run
 };
 
-void runPlay(const SceneDesc& level, const RandomPlay& play, Method method, std::int64_t steps, std::uint64_t seed, Tally& tally) {
+void runPlay(const SceneDesc& level, const RandomPlay& play, Method method, std::int64_t steps, std::uint64_t seed,
+             Tally& tally) {
     SceneDesc scene = level;
     scene.world.method = method;
     LevelRun run(scene, play.placements);
@@ -155,7 +163,8 @@ void runPlay(const SceneDesc& level, const RandomPlay& play, Method method, std:
     const Vec2 reference{g.x > 0.0 ? b.max.x : b.min.x, g.y > 0.0 ? b.max.y : b.min.y};
     const double start = mechanicalEnergy(run.world(), reference);
     const double allowed = start + 0.1 * std::abs(start) + 0.05 * weight(run.world()) + 1e-9;
-    const std::string what = "level " + level.name + " seed " + std::to_string(seed) + " method " + std::string(methodName(method));
+    const std::string what = "level " + level.name + " seed " + std::to_string(seed) + " method " +
+                             std::string(methodName(method));
     std::size_t next = 0;
     double worst = 0.0;
     for (std::int64_t i = 0; i < steps; ++i) {
@@ -172,18 +181,21 @@ void runPlay(const SceneDesc& level, const RandomPlay& play, Method method, std:
         if (passive && world.stats().speedClamps == 0) {
             const double energy = mechanicalEnergy(world, reference);
             if (!(energy <= allowed) && method == Method::turnBased) {
-                ++tally.turnBasedGains; // turn-based's known failure ("order matters"), counted as in random_scenes_test
+                ++tally
+                      .turnBasedGains; // turn-based's known failure ("order matters"), counted as in random_scenes_test
                 break;
             }
             if (!(energy <= allowed)) {
-                UNSCOPED_INFO(what << ": energy " << energy << " J after step " << i + 1 << ", started at " << start << " J, allowed " << allowed << " J");
+                UNSCOPED_INFO(what << ": energy " << energy << " J after step " << i + 1 << ", started at " << start
+                                   << " J, allowed " << allowed << " J");
                 CHECK(energy <= allowed);
                 break;
             }
         }
     }
     const StepStats& stats = run.world().stats();
-    INFO(what << ": fastest body " << worst << " x its bound of " << bound << " m/s, " << stats.isolatedBodies << " bodies isolated");
+    INFO(what << ": fastest body " << worst << " x its bound of " << bound << " m/s, " << stats.isolatedBodies
+              << " bodies isolated");
     CHECK_FALSE(stats.nonFinite);
     CHECK(stats.isolatedBodies == 0);
     CHECK(worst <= 1.0);
@@ -227,16 +239,18 @@ void playLevels(int count, std::uint64_t firstSeed, std::int64_t maxSteps) {
         for (const Method m : kAllMethods)
             if (m != level.world.method) methods.push_back(m);
         for (const Method method : methods) {
-            if ((!movesTurningBodies(method) && needsRotatingSolver(level)) || !methodBudgetRefusal(level, method).empty()) {
+            if ((!movesTurningBodies(method) && needsRotatingSolver(level)) ||
+                !methodBudgetRefusal(level, method).empty()) {
                 ++tally.skipped;
                 continue;
             }
             runPlay(level, play, method, steps, seed, tally);
         }
     }
-    WARN("random levels: " << tally.plays << " plays of " << levels.size() << " levels, " << tally.runs << " runs, " << tally.refused
-                           << " placement draws refused, " << tally.skipped << " methods skipped (turning bodies), " << tally.nonFinite
-                           << " non-finite, " << tally.isolated << " isolated, " << tally.escapes << " escapes, " << tally.clamps
+    WARN("random levels: " << tally.plays << " plays of " << levels.size() << " levels, " << tally.runs << " runs, "
+                           << tally.refused << " placement draws refused, " << tally.skipped
+                           << " methods skipped (turning bodies), " << tally.nonFinite << " non-finite, "
+                           << tally.isolated << " isolated, " << tally.escapes << " escapes, " << tally.clamps
                            << " speed clamps, " << tally.declined << " actions declined, " << tally.turnBasedGains
                            << " turn-based energy gains, fastest body " << tally.worstSpeedRatio << " x its bound");
     CHECK(tally.nonFinite == 0);
@@ -246,15 +260,18 @@ void playLevels(int count, std::uint64_t firstSeed, std::int64_t maxSteps) {
 
 } // namespace
 
-TEST_CASE("random valid plays of every level stay finite under every method, with bounded speeds and escapes counted", "[robustness][random]") {
+TEST_CASE("random valid plays of every level stay finite under every method, with bounded speeds and escapes counted",
+          "[robustness][random]") {
     playLevels(countFromEnvironment("RUBE_RANDOM_LEVELS", 400), 1, 300);
 }
 
-TEST_CASE("thousands of random valid plays of every level stay finite for their whole time limit", "[.long][robustness][random]") {
+TEST_CASE("thousands of random valid plays of every level stay finite for their whole time limit",
+          "[.long][robustness][random]") {
     playLevels(countFromEnvironment("RUBE_RANDOM_LEVELS_LONG", 10000), 100000, 0);
 }
 
-TEST_CASE("random plays are deterministic, refused now and then, and use every action the levels allow", "[robustness][random]") {
+TEST_CASE("random plays are deterministic, refused now and then, and use every action the levels allow",
+          "[robustness][random]") {
     const std::vector<SceneDesc> levels = shippedLevels();
     int refused = 0, placed = 0, actions = 0;
     for (std::uint64_t seed = 1; seed <= 160; ++seed) {
@@ -263,7 +280,8 @@ TEST_CASE("random plays are deterministic, refused now and then, and use every a
         const auto pa = rube::test::randomPlacements(level, a);
         const auto pb = rube::test::randomPlacements(level, b);
         REQUIRE(pa.size() == pb.size());
-        for (std::size_t i = 0; i < pa.size(); ++i) CHECK((pa[i].position.x == pb[i].position.x && pa[i].angle == pb[i].angle));
+        for (std::size_t i = 0; i < pa.size(); ++i)
+            CHECK((pa[i].position.x == pb[i].position.x && pa[i].angle == pb[i].angle));
         refused += checkPlacements(level, pa).has_value();
         placed += !pa.empty();
         actions += static_cast<int>(rube::test::randomActions(level, pa, 300, a).size());

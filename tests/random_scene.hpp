@@ -44,9 +44,9 @@ struct RandomScene {
     World world;
     std::vector<Explosion> explosions; ///< applied at `explosionStep[i]`
     std::vector<int> explosionStep;
-    bool energySources = false;        ///< fans, thrusters, magnets, water, explosions or kinematic bodies
-    bool turning = false;              ///< turning bodies or pivots: only solver and auto accept it
-    double floorY = 0.0;               ///< the box's floor: potential energy is measured from here
+    bool energySources = false; ///< fans, thrusters, magnets, water, explosions or kinematic bodies
+    bool turning = false;       ///< turning bodies or pivots: only solver and auto accept it
+    double floorY = 0.0;        ///< the box's floor: potential energy is measured from here
 };
 
 inline Material randomMaterial(SceneRng& rng) {
@@ -106,7 +106,8 @@ inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(
     std::vector<CircleId> dynamicCircles;
     std::vector<int> cells(static_cast<std::size_t>(columns * rows));
     for (int i = 0; i < columns * rows; ++i) cells[static_cast<std::size_t>(i)] = i;
-    for (int i = columns * rows - 1; i > 0; --i) std::swap(cells[static_cast<std::size_t>(i)], cells[static_cast<std::size_t>(rng.below(i + 1))]);
+    for (int i = columns * rows - 1; i > 0; --i)
+        std::swap(cells[static_cast<std::size_t>(i)], cells[static_cast<std::size_t>(rng.below(i + 1))]);
     const int filled = 1 + rng.below(std::max(1, std::min(30, columns * rows * 2 / 3)));
     for (int k = 0; k < filled; ++k) {
         const int c = cells[static_cast<std::size_t>(k)];
@@ -156,7 +157,8 @@ inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(
                 p.body = body;
                 p.localAnchor = {rng.in(-d.halfExtents.x, d.halfExtents.x), rng.in(-d.halfExtents.y, d.halfExtents.y)};
                 const double c0 = std::cos(d.angle), s0 = std::sin(d.angle);
-                p.worldAnchor = d.position + Vec2{c0 * p.localAnchor.x - s0 * p.localAnchor.y, s0 * p.localAnchor.x + c0 * p.localAnchor.y};
+                p.worldAnchor = d.position + Vec2{c0 * p.localAnchor.x - s0 * p.localAnchor.y,
+                                                  s0 * p.localAnchor.x + c0 * p.localAnchor.y};
                 world.addPivot(p);
             }
         } else { // a segment inside the box: slanted, sometimes kinematic, sometimes a turning paddle
@@ -173,7 +175,8 @@ inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(
                 path.loop = true;
                 const bool turns = rng.chance(0.5);
                 path.keys.push_back(PathKey{0.0, {}, 0.0});
-                path.keys.push_back(PathKey{rng.in(0.2, 2.0), turns ? Vec2{} : Vec2{rng.in(-0.1, 0.1), rng.in(-0.1, 0.1)},
+                path.keys.push_back(PathKey{rng.in(0.2, 2.0),
+                                            turns ? Vec2{} : Vec2{rng.in(-0.1, 0.1), rng.in(-0.1, 0.1)},
                                             turns ? rng.in(-6.0, 6.0) : 0.0});
                 s.path = world.addPath(std::move(path));
                 scene.energySources = true;
@@ -189,7 +192,8 @@ inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(
         RopeDef d;
         d.circle = dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
         const Vec2 p = world.circle(d.circle).position;
-        const CircleId other = dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
+        const CircleId other =
+            dynamicCircles[static_cast<std::size_t>(rng.below(static_cast<int>(dynamicCircles.size())))];
         if (other != d.circle && rng.chance(0.5)) {
             d.other = other;
             d.length = (world.circle(other).position - p).length() * rng.in(1.0, 1.5);
@@ -251,9 +255,13 @@ inline RandomScene makeRandomScene(std::uint64_t seed, const std::function<void(
 /// True when every body's position, velocity, angle and spin are finite.
 inline bool finiteState(const World& world) {
     for (const Circle& c : world.circles())
-        if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angle) || !std::isfinite(c.angularVelocity)) return false;
+        if (!isFinite(c.position) || !isFinite(c.velocity) || !std::isfinite(c.angle) ||
+            !std::isfinite(c.angularVelocity))
+            return false;
     for (const RigidBody& b : world.bodies())
-        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) return false;
+        if (!isFinite(b.position) || !isFinite(b.velocity) || !std::isfinite(b.angle) ||
+            !std::isfinite(b.angularVelocity))
+            return false;
     return true;
 }
 
@@ -268,9 +276,11 @@ inline double mechanicalEnergy(const World& world, Vec2 reference) {
         if (inverseInertia > 0.0) energy += 0.5 * w * w / inverseInertia;
     };
     for (const Circle& c : world.circles())
-        if (c.motion == Motion::dynamic && c.inverseMass > 0.0) add(c.inverseMass, c.inverseInertia, c.position, c.velocity, c.angularVelocity);
+        if (c.motion == Motion::dynamic && c.inverseMass > 0.0)
+            add(c.inverseMass, c.inverseInertia, c.position, c.velocity, c.angularVelocity);
     for (const RigidBody& b : world.bodies())
-        if (b.motion == Motion::dynamic && b.inverseMass > 0.0) add(b.inverseMass, b.inverseInertia, b.position, b.velocity, b.angularVelocity);
+        if (b.motion == Motion::dynamic && b.inverseMass > 0.0)
+            add(b.inverseMass, b.inverseInertia, b.position, b.velocity, b.angularVelocity);
     return energy;
 }
 

@@ -13,10 +13,10 @@
 
 using namespace rube;
 using rube::test::finiteState;
-using rube::test::mechanicalEnergy;
-using rube::test::weight;
 using rube::test::makeRandomScene;
+using rube::test::mechanicalEnergy;
 using rube::test::RandomScene;
+using rube::test::weight;
 
 namespace {
 
@@ -54,7 +54,8 @@ void runScene(std::uint64_t seed, Method method, Tally& tally) {
             if (scene.explosionStep[e] == step) applyExplosion(world, scene.explosions[e]);
         world.step();
         if (!finiteState(world)) {
-            UNSCOPED_INFO("seed " << seed << " method " << methodName(method) << ": non-finite state after step " << step + 1);
+            UNSCOPED_INFO("seed " << seed << " method " << methodName(method) << ": non-finite state after step "
+                                  << step + 1);
             ++tally.nonFinite;
             break;
         }
@@ -68,15 +69,17 @@ void runScene(std::uint64_t seed, Method method, Tally& tally) {
                 break;
             }
             if (!(energy <= allowed)) {
-                UNSCOPED_INFO("seed " << seed << " method " << methodName(method) << ": energy " << energy << " J after step "
-                                      << step + 1 << ", started at " << start << " J, allowed " << allowed << " J");
+                UNSCOPED_INFO("seed " << seed << " method " << methodName(method) << ": energy " << energy
+                                      << " J after step " << step + 1 << ", started at " << start << " J, allowed "
+                                      << allowed << " J");
                 CHECK(energy <= allowed);
                 break;
             }
         }
     }
     const StepStats& stats = world.stats();
-    INFO("seed " << seed << " method " << methodName(method) << ": " << stats.isolatedBodies << " bodies isolated, the first "
+    INFO("seed " << seed << " method " << methodName(method) << ": " << stats.isolatedBodies
+                 << " bodies isolated, the first "
                  << (stats.firstIsolatedKind == Other::body ? "rigid body " : "circle ") << stats.firstIsolatedSlot);
     CHECK_FALSE(stats.nonFinite);
     // Every body outside the bounds now was counted as an escape (each once, so never fewer).
@@ -101,15 +104,17 @@ void runScenes(int count, std::uint64_t firstSeed) {
         }
         ++tally.scenes;
     }
-    WARN("random scenes: " << tally.scenes << " scenes, " << tally.runs << " runs of " << kSteps << " steps, " << tally.nonFinite
-                           << " non-finite, " << tally.isolated << " runs isolated a body, " << tally.clamps << " speed clamps, "
-                           << tally.turnBasedGains << " turn-based runs gained energy");
+    WARN("random scenes: " << tally.scenes << " scenes, " << tally.runs << " runs of " << kSteps << " steps, "
+                           << tally.nonFinite << " non-finite, " << tally.isolated << " runs isolated a body, "
+                           << tally.clamps << " speed clamps, " << tally.turnBasedGains
+                           << " turn-based runs gained energy");
     CHECK(tally.nonFinite == 0);
 }
 
 } // namespace
 
-TEST_CASE("random valid scenes stay finite under every method, with bounded energy and escapes counted", "[robustness][random]") {
+TEST_CASE("random valid scenes stay finite under every method, with bounded energy and escapes counted",
+          "[robustness][random]") {
     runScenes(countFromEnvironment("RUBE_RANDOM_SCENES", 200), 1);
 }
 

@@ -66,7 +66,8 @@ Image testCard(int squareX = 20, int squareY = 10) {
 
 std::vector<std::string> filesIn(const std::filesystem::path& folder) {
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -329,7 +330,8 @@ TEST_CASE("golden check: UPDATE_SCREENSHOTS=1 writes the golden and passes", "[r
     NoScreenshotUpdate restoreAfterwards;
     ::setenv("UPDATE_SCREENSHOTS", "1", 1);
     TemporaryFolder folder;
-    ScreenshotCheck check = checkScreenshot(testCard(), folder.path / "goldens" / "scene_0000.png", folder.path / "failures");
+    ScreenshotCheck check = checkScreenshot(testCard(), folder.path / "goldens" / "scene_0000.png",
+                                            folder.path / "failures");
     ::unsetenv("UPDATE_SCREENSHOTS");
     CHECK(check.passed);
     CHECK(check.goldenWritten);

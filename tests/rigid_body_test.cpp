@@ -97,7 +97,8 @@ TEST_CASE("momentOfInertia of a box and a capsule matches the formulas", "[rigid
         const double integrated = integratedInertia(BodyShape::capsule, he, 3.0, 1200);
         std::printf("capsule %.2f x %.2f: I formula %.6f, integrated %.6f\n", he.x, he.y, formula, integrated);
         CHECK(formula == Approx(integrated).epsilon(2e-3));
-        CHECK(momentOfInertia(BodyShape::box, he, 3.0) == Approx(integratedInertia(BodyShape::box, he, 3.0, 600)).epsilon(1e-4));
+        CHECK(momentOfInertia(BodyShape::box, he, 3.0) ==
+              Approx(integratedInertia(BodyShape::box, he, 3.0, 600)).epsilon(1e-4));
     }
 }
 
@@ -127,8 +128,8 @@ TEST_CASE("a box slides down an incline at g (sin theta - mu cos theta), and sti
             double a = 0.0, travel = 0.0;
             slide(theta, mu, a, travel);
             const double expected = kG * (std::sin(theta) - mu * std::cos(theta));
-            std::printf("incline %.0f deg, mu %.2f: a = %.5f m/s^2, analytic %.5f (%.3f %%)\n", thetaDegrees, mu, a, expected,
-                        100.0 * (a - expected) / expected);
+            std::printf("incline %.0f deg, mu %.2f: a = %.5f m/s^2, analytic %.5f (%.3f %%)\n", thetaDegrees, mu, a,
+                        expected, 100.0 * (a - expected) / expected);
             CHECK(a == Approx(expected).epsilon(0.01));
         }
     }
@@ -153,8 +154,8 @@ TEST_CASE("a box resting on the floor stays: no drift, no sinking over 10 s", "[
         drift = std::max(drift, std::abs(b.position.x - 1.0));
     }
     const double sinking = 0.5 * height - lowest;
-    std::printf("resting box 10 s: drift %.3g m, deepest sinking %.3g m (%.3g %% of its height), angle %.3g\n", drift, sinking,
-                100.0 * sinking / height, world.bodies()[0].angle);
+    std::printf("resting box 10 s: drift %.3g m, deepest sinking %.3g m (%.3g %% of its height), angle %.3g\n", drift,
+                sinking, 100.0 * sinking / height, world.bodies()[0].angle);
     CHECK(drift < 1e-3);
     CHECK(sinking < 0.01 * height);
     CHECK(std::abs(world.bodies()[0].angle) < 1e-4);
@@ -176,12 +177,14 @@ TEST_CASE("a domino falls back below its critical angle atan(w / h) and tips ove
     std::printf("domino critical angle %.4f deg\n", critical / kDegree);
     for (const double fraction : {0.8, 0.95}) {
         const double angle = fallen(fraction * critical);
-        std::printf("domino tilted %.2f deg: angle after 5 s %.4f deg\n", fraction * critical / kDegree, angle / kDegree);
+        std::printf("domino tilted %.2f deg: angle after 5 s %.4f deg\n", fraction * critical / kDegree,
+                    angle / kDegree);
         CHECK(std::abs(angle) < 0.5 * kDegree);
     }
     for (const double fraction : {1.05, 1.2}) {
         const double angle = fallen(fraction * critical);
-        std::printf("domino tilted %.2f deg: angle after 5 s %.4f deg\n", fraction * critical / kDegree, angle / kDegree);
+        std::printf("domino tilted %.2f deg: angle after 5 s %.4f deg\n", fraction * critical / kDegree,
+                    angle / kDegree);
         CHECK(angle > 80.0 * kDegree);
     }
 }
@@ -246,8 +249,8 @@ TEST_CASE("a capsule dropped flat on the floor comes to rest without sinking", "
         lowest = std::min(lowest, world.bodies()[0].position.y);
     }
     const RigidBody& b = world.bodies()[0];
-    std::printf("capsule at rest: height %.6f (radius 0.1), lowest in the last 2 s %.6f, speed %.3g, angle %.3g\n", b.position.y,
-                lowest, b.velocity.length(), b.angle);
+    std::printf("capsule at rest: height %.6f (radius 0.1), lowest in the last 2 s %.6f, speed %.3g, angle %.3g\n",
+                b.position.y, lowest, b.velocity.length(), b.angle);
     CHECK(lowest > 0.1 - 0.01 * 0.2);
     CHECK(b.velocity.length() < 1e-3);
     CHECK(std::abs(b.angle) < 1e-3);
@@ -258,8 +261,8 @@ TEST_CASE("energy never grows in a box bouncing on the floor, C <= 1", "[rigid]"
     // landing steeply enough to set the box spinning by more than its reach per step is not among
     // them: its far corner is not in the step's contacts and lands deep (see the report).
     for (const double c : {0.0, 0.5, 0.9, 1.0}) {
-        for (const auto& [angle, omega, friction] : {std::tuple{0.0, 0.0, 0.0}, std::tuple{0.1, 0.0, 0.5}, std::tuple{0.3, 2.0, 0.0},
-                                                      std::tuple{0.3, 2.0, 0.5}}) {
+        for (const auto& [angle, omega, friction] : {std::tuple{0.0, 0.0, 0.0}, std::tuple{0.1, 0.0, 0.5},
+                                                     std::tuple{0.3, 2.0, 0.0}, std::tuple{0.3, 2.0, 0.5}}) {
             World world = solverWorld();
             addFloor(world, 1.0, 1.0);
             RigidBodyDef d = box({0.0, 2.0}, 0.4, 0.2, 1.0, angle, friction);
@@ -273,8 +276,9 @@ TEST_CASE("energy never grows in a box bouncing on the floor, C <= 1", "[rigid]"
                 world.step();
                 worst = std::max(worst, energy(world) - e0);
             }
-            std::printf("bouncing box C %.1f, angle %.1f, omega %.0f, mu %.1f: E0 %.4f J, largest gain %.3g J, final %.4f J\n", c,
-                        angle, omega, friction, e0, worst, energy(world));
+            std::printf(
+                "bouncing box C %.1f, angle %.1f, omega %.0f, mu %.1f: E0 %.4f J, largest gain %.3g J, final %.4f J\n",
+                c, angle, omega, friction, e0, worst, energy(world));
             CHECK(worst <= 1e-3 * e0);
         }
     }

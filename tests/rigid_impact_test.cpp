@@ -63,8 +63,9 @@ TEST_CASE("a box dropped on the floor is one impact at sqrt(2 g h), reported as 
     REQUIRE(impacts.size() == 1);
     const Impact& impact = impacts.front();
     const double speed = std::sqrt(2.0 * kG * h), time = std::sqrt(2.0 * h / kG);
-    std::printf("box on floor: approach %.4f m/s (sqrt(2 g h) %.4f), time %.4f s (sqrt(2 h / g) %.4f), point [%.3f, %.3f]\n",
-                impact.approachSpeed, speed, impact.time, time, impact.pointOfImpact.x, impact.pointOfImpact.y);
+    std::printf(
+        "box on floor: approach %.4f m/s (sqrt(2 g h) %.4f), time %.4f s (sqrt(2 h / g) %.4f), point [%.3f, %.3f]\n",
+        impact.approachSpeed, speed, impact.time, time, impact.pointOfImpact.x, impact.pointOfImpact.y);
     CHECK(impact.circle == -1);
     CHECK(impact.body == 0);
     CHECK(impact.otherKind == Other::segment);
@@ -118,7 +119,8 @@ TEST_CASE("a box striking a fixed ball is the box's impact, a ball striking a bo
         std::vector<Impact> impacts = collect(world, 0.5);
         REQUIRE_FALSE(impacts.empty());
         const Impact& impact = impacts.front();
-        std::printf("ball on a box: approach %.4f m/s (sqrt(2 g 0.8) %.4f)\n", impact.approachSpeed, std::sqrt(2.0 * kG * 0.8));
+        std::printf("ball on a box: approach %.4f m/s (sqrt(2 g 0.8) %.4f)\n", impact.approachSpeed,
+                    std::sqrt(2.0 * kG * 0.8));
         CHECK(impact.circle == 0);
         CHECK(impact.otherKind == Other::body);
         CHECK(impact.other == 0);
@@ -128,7 +130,8 @@ TEST_CASE("a box striking a fixed ball is the box's impact, a ball striking a bo
     }
 }
 
-TEST_CASE("a box dropped on a resting box: one impact between the two bodies, none from the resting one", "[rigid][impact]") {
+TEST_CASE("a box dropped on a resting box: one impact between the two bodies, none from the resting one",
+          "[rigid][impact]") {
     World world = solverWorld();
     addFloor(world);
     world.addBody(box({0.0, 0.25}, {1.0, 0.5}, 2.0));
@@ -138,7 +141,8 @@ TEST_CASE("a box dropped on a resting box: one impact between the two bodies, no
     world.addBody(box({0.0, 0.5 + 0.5 + 0.25}, {0.6, 0.5}, 1.0)); // 0.5 m above it
     const std::vector<Impact> impacts = collect(world, 2.0);
     REQUIRE(impacts.size() == 1);
-    std::printf("box on a box: approach %.4f m/s (sqrt(2 g 0.5) %.4f)\n", impacts[0].approachSpeed, std::sqrt(2.0 * kG * 0.5));
+    std::printf("box on a box: approach %.4f m/s (sqrt(2 g 0.5) %.4f)\n", impacts[0].approachSpeed,
+                std::sqrt(2.0 * kG * 0.5));
     CHECK(impacts[0].circle == -1);
     CHECK(impacts[0].body == 0); // the pair's lower index, struck from above
     CHECK(impacts[0].otherKind == Other::body);

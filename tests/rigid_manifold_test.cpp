@@ -41,17 +41,20 @@ struct Expected {
 
 /// The expected points that lie within the speculative distance, in any order, match the manifold's.
 void checkPoints(const Manifold& m, Vec2 normal, std::vector<Expected> expected) {
-    expected.erase(std::remove_if(expected.begin(), expected.end(), [](const Expected& e) { return e.separation > kSpeculative; }),
-                   expected.end());
+    expected.erase(
+        std::remove_if(expected.begin(), expected.end(), [](const Expected& e) { return e.separation > kSpeculative; }),
+        expected.end());
     REQUIRE(m.count == static_cast<int>(expected.size()));
     if (m.count == 0) return;
     CHECK(m.normal.x == Approx(normal.x).margin(kTolerance));
     CHECK(m.normal.y == Approx(normal.y).margin(kTolerance));
     for (const Expected& e : expected) {
         const auto near = [&](const ManifoldPoint& p) { return (p.point - e.point).length() < 1e-7; };
-        const ManifoldPoint* match = near(m.points[0]) ? &m.points[0] : (m.count > 1 && near(m.points[1]) ? &m.points[1] : nullptr);
-        INFO("expected point (" << e.point.x << ", " << e.point.y << ") at gap " << e.separation << "; got (" << m.points[0].point.x
-                                << ", " << m.points[0].point.y << ")" << (m.count > 1 ? " and another" : ""));
+        const ManifoldPoint* match = near(m.points[0]) ? &m.points[0]
+                                                       : (m.count > 1 && near(m.points[1]) ? &m.points[1] : nullptr);
+        INFO("expected point (" << e.point.x << ", " << e.point.y << ") at gap " << e.separation << "; got ("
+                                << m.points[0].point.x << ", " << m.points[0].point.y << ")"
+                                << (m.count > 1 ? " and another" : ""));
         REQUIRE(match != nullptr);
         CHECK(match->separation == Approx(e.separation).margin(kTolerance));
     }
@@ -66,7 +69,8 @@ Vec2 corner(Vec2 centre, Vec2 half, double angle, int k) {
 
 } // namespace
 
-TEST_CASE("a box on a wide box touches at both bottom corners, at any offset and tilt under 40 degrees", "[rigid][manifold]") {
+TEST_CASE("a box on a wide box touches at both bottom corners, at any offset and tilt under 40 degrees",
+          "[rigid][manifold]") {
     // Ground: 10 x 1 m, its top face at y = 0.5. The upper box's bottom edge runs from corner 0 to corner 1;
     // a corner at height y is y - 0.5 from the face, and its point is midway: (x, (y + 0.5) / 2).
     const Vec2 groundHalf{5.0, 0.5};
@@ -78,15 +82,18 @@ TEST_CASE("a box on a wide box touches at both bottom corners, at any offset and
                 for (const double lowestGap : {-0.01, -0.001, 0.0, 0.003, 0.015, 0.05}) {
                     const double angle = degrees * 3.141592653589793 / 180.0;
                     // Lift the box so its lowest corner stands lowestGap above the face.
-                    const double lowest = std::min(corner({0.0, 0.0}, half, angle, 0).y, corner({0.0, 0.0}, half, angle, 1).y);
+                    const double lowest = std::min(corner({0.0, 0.0}, half, angle, 0).y,
+                                                   corner({0.0, 0.0}, half, angle, 1).y);
                     const Vec2 centre{x, 0.5 + lowestGap - lowest};
-                    const Manifold m = collideRoundedPolygons(ground, makeRoundedPolygon(box(half), centre, angle), kSpeculative);
+                    const Manifold m = collideRoundedPolygons(ground, makeRoundedPolygon(box(half), centre, angle),
+                                                              kSpeculative);
                     std::vector<Expected> expected;
                     for (const int k : {0, 1}) {
                         const Vec2 c = corner(centre, half, angle, k);
                         expected.push_back({{c.x, 0.5 * (c.y + 0.5)}, c.y - 0.5});
                     }
-                    INFO("half " << half.x << " x " << half.y << ", " << degrees << " degrees, x " << x << ", gap " << lowestGap);
+                    INFO("half " << half.x << " x " << half.y << ", " << degrees << " degrees, x " << x << ", gap "
+                                 << lowestGap);
                     checkPoints(m, {0.0, 1.0}, expected);
                     (m.count == 2 ? withTwo : m.count == 1 ? withOne : withNone) += 1;
                 }
@@ -102,7 +109,8 @@ TEST_CASE("a flat box overhanging the edge of another touches where the faces ov
     for (double x = -1.9; x <= 1.9; x += 0.2)
         for (const double gap : {-0.02, -0.004, 0.0, 0.01}) {
             const double hx = 0.4;
-            const Manifold m = collideRoundedPolygons(lower, makeRoundedPolygon(box({hx, 0.3}), {x, 0.25 + 0.3 + gap}, 0.0), kSpeculative);
+            const Manifold m = collideRoundedPolygons(
+                lower, makeRoundedPolygon(box({hx, 0.3}), {x, 0.25 + 0.3 + gap}, 0.0), kSpeculative);
             const double left = std::max(-1.0, x - hx), right = std::min(1.0, x + hx);
             INFO("x " << x << ", gap " << gap);
             if (right - left < 0.05) continue; // at or beside the lower box's edge: a corner case, not this test's
@@ -121,7 +129,8 @@ TEST_CASE("a capsule on a box touches at its core's ends, one radius out", "[rig
                 const double halfLength = 0.6;
                 const Vec2 end0 = Vec2{-halfLength, 0.0}.rotated(angle), end1 = Vec2{halfLength, 0.0}.rotated(angle);
                 const Vec2 centre{0.7, 0.5 + r + lowestGap - std::min(end0.y, end1.y)};
-                const Manifold m = collideRoundedPolygons(ground, makeRoundedPolygon(capsule(halfLength, r), centre, angle), kSpeculative);
+                const Manifold m = collideRoundedPolygons(
+                    ground, makeRoundedPolygon(capsule(halfLength, r), centre, angle), kSpeculative);
                 std::vector<Expected> expected;
                 for (const Vec2 end : {centre + end0, centre + end1})
                     expected.push_back({{end.x, 0.5 * (end.y - r + 0.5)}, end.y - r - 0.5});
@@ -132,7 +141,8 @@ TEST_CASE("a capsule on a box touches at its core's ends, one radius out", "[rig
     CHECK(points > 80);
 }
 
-TEST_CASE("a box above a line segment touches it at its bottom corners, the normal from the box down", "[rigid][manifold]") {
+TEST_CASE("a box above a line segment touches it at its bottom corners, the normal from the box down",
+          "[rigid][manifold]") {
     // The body is shape A and the segment B, as the solver pairs them: the normal runs from the box to the
     // line, (0, -1). The line is 10 m long at y = 0 with radius rs; a corner at height y is y - rs from its surface.
     for (const double rs : {0.0, 0.05}) {
@@ -145,9 +155,11 @@ TEST_CASE("a box above a line segment touches it at its bottom corners, the norm
             for (const double lowestGap : {-0.01, 0.0, 0.005, 0.05}) {
                 const double angle = degrees * 3.141592653589793 / 180.0;
                 const Vec2 half{0.6, 0.2};
-                const double lowest = std::min(corner({0.0, 0.0}, half, angle, 0).y, corner({0.0, 0.0}, half, angle, 1).y);
+                const double lowest = std::min(corner({0.0, 0.0}, half, angle, 0).y,
+                                               corner({0.0, 0.0}, half, angle, 1).y);
                 const Vec2 centre{-1.3, rs + lowestGap - lowest};
-                const Manifold m = collideRoundedPolygons(makeRoundedPolygon(box(half), centre, angle), seg, kSpeculative);
+                const Manifold m = collideRoundedPolygons(makeRoundedPolygon(box(half), centre, angle), seg,
+                                                          kSpeculative);
                 std::vector<Expected> expected;
                 for (const int k : {0, 1}) {
                     const Vec2 c = corner(centre, half, angle, k);
@@ -159,7 +171,8 @@ TEST_CASE("a box above a line segment touches it at its bottom corners, the norm
     }
 }
 
-TEST_CASE("a circle touches a box's face along its normal and its corner along the line from the corner", "[rigid][manifold]") {
+TEST_CASE("a circle touches a box's face along its normal and its corner along the line from the corner",
+          "[rigid][manifold]") {
     // Box 2 x 1 centred at the origin. Above the face: gap cy - 0.5 - r, normal (0, 1). Past the corner
     // (1, 0.5) diagonally: gap |c - corner| - r, normal from the corner to the centre, the point midway
     // between the corner and the circle's surface.
@@ -193,11 +206,13 @@ TEST_CASE("a resting box's points keep their ids while it slides, settles and ti
     // The ids are what warm starting matches from step to step (rigid_warm_start.hpp).
     const RoundedPolygon ground = makeRoundedPolygon(box({5.0, 0.5}), {0.0, 0.0}, 0.0);
     const Vec2 half{0.4, 0.3};
-    const Manifold first = collideRoundedPolygons(ground, makeRoundedPolygon(box(half), {0.0, 0.8 - 0.002}, 0.0), kSpeculative);
+    const Manifold first = collideRoundedPolygons(ground, makeRoundedPolygon(box(half), {0.0, 0.8 - 0.002}, 0.0),
+                                                  kSpeculative);
     REQUIRE(first.count == 2);
     for (double dx = -1.0; dx <= 1.0; dx += 0.125)
         for (const double dy : {-0.003, 0.0, 0.004}) {
-            const Manifold later = collideRoundedPolygons(ground, makeRoundedPolygon(box(half), {dx, 0.8 + dy}, 0.01 * dx), kSpeculative);
+            const Manifold later = collideRoundedPolygons(
+                ground, makeRoundedPolygon(box(half), {dx, 0.8 + dy}, 0.01 * dx), kSpeculative);
             REQUIRE(later.count == 2);
             // The point at the left corner keeps the left corner's id.
             const int leftFirst = first.points[0].point.x < first.points[1].point.x ? 0 : 1;

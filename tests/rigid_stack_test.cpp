@@ -11,7 +11,8 @@
 
 using namespace rube;
 
-TEST_CASE("a stack of five boxes rests: the top sinks less than 3.5 mm and drifts less than 3 mm over 10 s", "[rigid][stack]") {
+TEST_CASE("a stack of five boxes rests: the top sinks less than 3.5 mm and drifts less than 3 mm over 10 s",
+          "[rigid][stack]") {
     WorldDef def;
     def.method = Method::solver;
     World world(def);

@@ -100,7 +100,8 @@ BounceRecord dropAndBounce(const RigidBodyDef& def, double floorBounciness, doub
 
 } // namespace
 
-TEST_CASE("a box or capsule landing on a corner while spinning never gains energy in a bounce, C <= 1", "[rigid][sweep]") {
+TEST_CASE("a box or capsule landing on a corner while spinning never gains energy in a bounce, C <= 1",
+          "[rigid][sweep]") {
     // Energy is measured in flight, where only gravity acts; the semi-implicit Euler substep loses
     // m g^2 h^2 / 2 in flight and never gains, so 0.1 % is pure margin over rounding: a tenth of a
     // percent of a 2 J drop is 2 mJ, and the old far-corner push-out gained up to 3 %.
@@ -119,13 +120,15 @@ TEST_CASE("a box or capsule landing on a corner while spinning never gains energ
             for (const double friction : {0.0, 0.5})
                 for (const double omega : {0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0})
                     for (const double angle : {0.0, 0.3, 0.7}) {
-                        const RigidBodyDef d = bodyDef(shape.shape, shape.halfExtents, {0.0, 1.0}, angle, {0.5, 0.0}, omega, c, friction);
+                        const RigidBodyDef d = bodyDef(shape.shape, shape.halfExtents, {0.0, 1.0}, angle, {0.5, 0.0},
+                                                       omega, c, friction);
                         const BounceRecord r = dropAndBounce(d, 1.0, 4.0);
                         worstAll = std::max(worstAll, r.worstGain);
                         if (r.worstGain > kTolerance)
-                            std::printf("%s C %.1f mu %.1f omega %4.0f angle %.1f: %d bounces, worst gain %+.3f %%\n", shape.name, c,
-                                        friction, omega, angle, r.bounces, 100.0 * r.worstGain);
-                        INFO(shape.name << " C " << c << " mu " << friction << " omega " << omega << " angle " << angle);
+                            std::printf("%s C %.1f mu %.1f omega %4.0f angle %.1f: %d bounces, worst gain %+.3f %%\n",
+                                        shape.name, c, friction, omega, angle, r.bounces, 100.0 * r.worstGain);
+                        INFO(shape.name << " C " << c << " mu " << friction << " omega " << omega << " angle "
+                                        << angle);
                         if (c == 1.0) CHECK(r.bounces >= 1);
                         CHECK(r.worstGain <= kTolerance);
                         // C = 0.5 loses: the first bounce alone keeps at most a quarter of the normal
@@ -145,7 +148,7 @@ struct Lane {
     double heading; ///< radians off the line's normal
     double angle;
     double omega;
-    bool moving;    ///< the 2 cm segment coming towards the body at 2 m/s, else a static line of radius 0
+    bool moving; ///< the 2 cm segment coming towards the body at 2 m/s, else a static line of radius 0
 };
 
 struct Flight {
@@ -163,7 +166,8 @@ Flight fly(const Lane& lane) {
     line.material = {1.0, 0.0};
     if (lane.moving) {
         line.radius = 0.01;
-        line.path = world.addPath(KinematicPath{{PathKey{0.0, {}, 0.0}, PathKey{10.0, {-10.0 * kTargetSpeed, 0.0}, 0.0}}, false});
+        line.path = world.addPath(
+            KinematicPath{{PathKey{0.0, {}, 0.0}, PathKey{10.0, {-10.0 * kTargetSpeed, 0.0}, 0.0}}, false});
     }
     world.addSegment(line);
     const Vec2 velocity{lane.speed * std::cos(lane.heading), lane.speed * std::sin(lane.heading)};
@@ -182,9 +186,11 @@ Flight fly(const Lane& lane) {
 
 } // namespace
 
-TEST_CASE("a fast box or capsule never tunnels through a thin line or a thin moving segment, 5 to 5000 m/s", "[rigid][sweep]") {
+TEST_CASE("a fast box or capsule never tunnels through a thin line or a thin moving segment, 5 to 5000 m/s",
+          "[rigid][sweep]") {
     int lanes = 0, tunnels = 0, notSentBack = 0;
-    for (const auto& [shape, he] : {std::pair{BodyShape::box, Vec2{0.05, 0.05}}, std::pair{BodyShape::capsule, Vec2{0.03, 0.02}}})
+    for (const auto& [shape, he] :
+         {std::pair{BodyShape::box, Vec2{0.05, 0.05}}, std::pair{BodyShape::capsule, Vec2{0.03, 0.02}}})
         for (const double speed : {5.0, 50.0, 500.0, 5000.0})
             for (const double heading : {0.0, 0.3})
                 for (const double angle : {0.0, 0.4, std::numbers::pi / 4, 1.2})
@@ -198,9 +204,11 @@ TEST_CASE("a fast box or capsule never tunnels through a thin line or a thin mov
                             if (f.tunnelled || !f.sentBack)
                                 std::printf("%s %6.0f m/s heading %.1f angle %.2f omega %3.0f %s: %s\n",
                                             shape == BodyShape::box ? "box" : "capsule", speed, heading, angle, omega,
-                                            moving ? "moving 2 cm segment" : "static line", f.tunnelled ? "TUNNELLED" : "not sent back");
-                            INFO((shape == BodyShape::box ? "box " : "capsule ") << speed << " m/s heading " << heading << " angle "
-                                                                                 << angle << " omega " << omega << (moving ? " moving" : " static"));
+                                            moving ? "moving 2 cm segment" : "static line",
+                                            f.tunnelled ? "TUNNELLED" : "not sent back");
+                            INFO((shape == BodyShape::box ? "box " : "capsule ")
+                                 << speed << " m/s heading " << heading << " angle " << angle << " omega " << omega
+                                 << (moving ? " moving" : " static"));
                             CHECK_FALSE(f.tunnelled);
                             CHECK(f.sentBack);
                         }
@@ -217,8 +225,8 @@ TEST_CASE("a slow box resting on a thin line stays put: the sweep leaves resting
     world.addBody(bodyDef(BodyShape::box, {0.05, 0.05}, {0.0, 0.05}, 0.0, {}, 0.0, 0.5, 0.5));
     for (int i = 0; i < 600; ++i) world.step();
     const RigidBody& b = world.bodies()[0];
-    std::printf("box resting on a line for 10 s: lowest %.6f m, x %.2g m, speed %.2g m/s, angle %.2g\n", lowest(b), b.position.x,
-                b.velocity.length(), b.angle);
+    std::printf("box resting on a line for 10 s: lowest %.6f m, x %.2g m, speed %.2g m/s, angle %.2g\n", lowest(b),
+                b.position.x, b.velocity.length(), b.angle);
     CHECK(std::abs(lowest(b)) < 1e-3);
     CHECK(std::abs(b.position.x) < 1e-6);
     CHECK(b.velocity.length() < 1e-3);
@@ -248,7 +256,8 @@ TEST_CASE("sweptTimeOfImpact: a sliding box and a turning rod meet a line when t
         CHECK(t <= 0.35);
         CHECK(t >= (0.7 - kTarget) / 2.0);
     }
-    SECTION("a rod of half length L turning by Theta about a centre D above a line meets it at asin((D - r) / L) / Theta") {
+    SECTION(
+        "a rod of half length L turning by Theta about a centre D above a line meets it at asin((D - r) / L) / Theta") {
         RigidBody rod;
         rod.shape = BodyShape::capsule;
         rod.halfExtents = {0.5, 0.02}; // L = 0.5, r = 0.02

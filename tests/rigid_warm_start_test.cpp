@@ -2,7 +2,7 @@
 // pair and its features, starts with the impulses it ended the last step with and counts as carried;
 // a point of another pair, of another feature, or one whose contact went away in between starts from
 // zero. Last, through the narrowphase: a box sliding on the ground keeps each corner's impulses.
-#include "rigid_manifold.hpp"   // internal: tests may reach inside, users may not
+#include "rigid_manifold.hpp" // internal: tests may reach inside, users may not
 #include "rigid_warm_start.hpp"
 
 #include <catch2/catch.hpp>
@@ -88,20 +88,19 @@ TEST_CASE("a rigid contact point found again next step gets its impulses back", 
     }
 }
 
-TEST_CASE("a rigid contact point of another pair or feature, or one that did not push, starts from zero", "[rigid][warmstart]") {
+TEST_CASE("a rigid contact point of another pair or feature, or one that did not push, starts from zero",
+          "[rigid][warmstart]") {
     RigidContactCache cache;
     const std::vector<RigidContact> last{contact({3, true}, {7, true}, {0x0201, 0x0210}, {2.0, 1.5}),
                                          contact({3, true}, {7, false}, {0x0201}, {0.0})};
     cache.store(last);
     // Same features on other pairs: body 7 as a circle instead of a rigid body (and back: the second
     // contact pushed nothing, so it is not remembered), another A, another B.
-    std::vector<RigidContact> next{fresh(contact({3, true}, {7, false}, {0x0210}, {0.0})),
-                                   fresh(contact({3, true}, {7, false}, {0x0201}, {0.0})),
-                                   fresh(contact({4, true}, {7, true}, {0x0201}, {0.0})),
-                                   fresh(contact({3, true}, {8, true}, {0x0201}, {0.0})),
-                                   // The right pair with features it did not have (between and after its own).
-                                   fresh(contact({3, true}, {7, true}, {0x0205}, {0.0})),
-                                   fresh(contact({3, true}, {7, true}, {0x0211}, {0.0}))};
+    std::vector<RigidContact> next{
+        fresh(contact({3, true}, {7, false}, {0x0210}, {0.0})), fresh(contact({3, true}, {7, false}, {0x0201}, {0.0})),
+        fresh(contact({4, true}, {7, true}, {0x0201}, {0.0})), fresh(contact({3, true}, {8, true}, {0x0201}, {0.0})),
+        // The right pair with features it did not have (between and after its own).
+        fresh(contact({3, true}, {7, true}, {0x0205}, {0.0})), fresh(contact({3, true}, {7, true}, {0x0211}, {0.0}))};
     cache.apply(next);
     for (const RigidContact& c : next) {
         CHECK(c.points[0].normalImpulse == 0.0);
@@ -153,7 +152,8 @@ TEST_CASE("a box sliding on the ground keeps each corner's impulses from step to
     RigidContactCache cache;
     auto [first, firstManifold] = step(-2.0, 0.0);
     REQUIRE(first.count == 2);
-    for (int k = 0; k < 2; ++k) first.points[k].normalImpulse = firstManifold.points[k].point.x < -2.0 ? 3.0 : 1.0; // left, right
+    for (int k = 0; k < 2; ++k)
+        first.points[k].normalImpulse = firstManifold.points[k].point.x < -2.0 ? 3.0 : 1.0; // left, right
     cache.store(std::vector<RigidContact>{first});
     for (int n = 1; n <= 30; ++n) {
         auto [now, manifold] = step(-2.0 + 0.1 * n, 0.002 * (n % 3));

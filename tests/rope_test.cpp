@@ -46,7 +46,8 @@ double measurePeriod(World& world, int periods) {
     while (static_cast<int>(crossings.size()) <= periods && world.time() < 200.0 * periods) {
         world.step();
         const double x = world.circles()[0].position.x - kAnchor.x;
-        if (previousX < 0.0 && x >= 0.0) crossings.push_back(previousT + (world.time() - previousT) * (-previousX / (x - previousX)));
+        if (previousX < 0.0 && x >= 0.0)
+            crossings.push_back(previousT + (world.time() - previousT) * (-previousX / (x - previousX)));
         previousX = x;
         previousT = world.time();
     }
@@ -102,8 +103,9 @@ TEST_CASE("rope: a taut rope does no work: a 60-degree swing keeps its energy ov
         }
         const double topStart = kAnchor.y - length * 0.5;
         CAPTURE(worst / swing, firstTop - topStart, lastTop - topStart);
-        CHECK(worst < 0.03 * swing);                      // bounded wobble, 2.5 % of the swing measured
-        CHECK(std::abs(lastTop - firstTop) < 5e-5 * length); // no drift (4 um measured): the swing still reaches its height
+        CHECK(worst < 0.03 * swing); // bounded wobble, 2.5 % of the swing measured
+        CHECK(std::abs(lastTop - firstTop) <
+              5e-5 * length); // no drift (4 um measured): the swing still reaches its height
         CHECK(std::abs(firstTop - topStart) < 2e-3 * length);
         CHECK(world.stats().nonFinite == false);
     }
@@ -124,9 +126,9 @@ TEST_CASE("rope: a ball hanging at rest stays at length L for ten simulated minu
             sideways = std::max(sideways, std::abs(c.position.x - kAnchor.x));
         }
         CAPTURE(drift, speed, sideways);
-        CHECK(drift <= 1e-14);    // exactly L to rounding, every step: no creep
-        CHECK(sideways == 0.0);   // it hangs straight down
-        CHECK(speed <= 1e-12);    // and never moves
+        CHECK(drift <= 1e-14);  // exactly L to rounding, every step: no creep
+        CHECK(sideways == 0.0); // it hangs straight down
+        CHECK(speed <= 1e-12);  // and never moves
     }
 }
 
@@ -214,7 +216,8 @@ TEST_CASE("rope: two balls on a rope circle each other, keeping momentum, energy
         world.addRope(RopeDef{ia, ib, {}, 2.0});
         const auto momentum = [&] { return world.circles()[0].velocity * 1.0 + world.circles()[1].velocity * 3.0; };
         const auto energy = [&] {
-            return 0.5 * world.circles()[0].velocity.lengthSquared() + 1.5 * world.circles()[1].velocity.lengthSquared();
+            return 0.5 * world.circles()[0].velocity.lengthSquared() +
+                   1.5 * world.circles()[1].velocity.lengthSquared();
         };
         const Vec2 p0 = momentum();
         const double e0 = energy();
@@ -235,7 +238,8 @@ TEST_CASE("rope: two balls on a rope circle each other, keeping momentum, energy
 TEST_CASE("rope: a rope to nothing or of no length is refused", "[rope]") {
     World world = openWorld(Method::exact);
     const CircleId ball = world.addCircle(CircleDef{});
-    CHECK_THROWS_AS(world.addRope(RopeDef{CircleId{ball.index + 1, ball.generation}, {}, {}, 1.0}), std::invalid_argument);
+    CHECK_THROWS_AS(world.addRope(RopeDef{CircleId{ball.index + 1, ball.generation}, {}, {}, 1.0}),
+                    std::invalid_argument);
     CHECK_THROWS_AS(world.addRope(RopeDef{ball, ball, {}, 1.0}), std::invalid_argument);
     CHECK_THROWS_AS(world.addRope(RopeDef{ball, {}, {}, 0.0}), std::invalid_argument);
     CHECK_THROWS_AS(world.cutRope(RopeId{}), std::invalid_argument);

@@ -23,6 +23,8 @@ TEST_CASE("a run with a body gone non-finite has a one-line reason, a finite run
     world.setVelocity(bad, {world.circle(bad).velocity.x, std::numeric_limits<double>::quiet_NaN()});
     world.step();
     const std::string why = game::unstableStateMessage(world);
-    CHECK(why == "a body's state became NaN or infinite: 1 body frozen, the first circle 1; the run's results are not physical");
+    CHECK(
+        why ==
+        "a body's state became NaN or infinite: 1 body frozen, the first circle 1; the run's results are not physical");
     CHECK(why.find('\n') == std::string::npos);
 }

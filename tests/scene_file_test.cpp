@@ -48,8 +48,9 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 } // namespace
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
-    const std::set<std::string> expected = {"ball-stack", "blocks", "bounce", "bullet", "float", "islands", "newtons-cradle",
-                                            "pendulum", "pile", "pool-break", "projectile", "rolling", "seesaw-domino", "slope-rest"};
+    const std::set<std::string> expected = {"ball-stack", "blocks",         "bounce",        "bullet",    "float",
+                                            "islands",    "newtons-cradle", "pendulum",      "pile",      "pool-break",
+                                            "projectile", "rolling",        "seesaw-domino", "slope-rest"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;
@@ -116,9 +117,10 @@ TEST_CASE("a minimal scene takes the physics defaults", "[scene]") {
 }
 
 TEST_CASE("the [world] table sets every WorldDef field", "[scene]") {
-    const SceneDesc scene = sceneOf("name = \"w\"\n[world]\ngravity = [1, -2]\ntime_step = 0.1\nmethod = \"turn-based\"\n"
-                                    "bounds = { min = [-1, -2], max = [3, 4] }\nsubsteps = 3\nmax_events_per_step = 7\n"
-                                    "resting_speed = 0.5\nduration = 1.0\n");
+    const SceneDesc scene = sceneOf(
+        "name = \"w\"\n[world]\ngravity = [1, -2]\ntime_step = 0.1\nmethod = \"turn-based\"\n"
+        "bounds = { min = [-1, -2], max = [3, 4] }\nsubsteps = 3\nmax_events_per_step = 7\n"
+        "resting_speed = 0.5\nduration = 1.0\n");
     CHECK(scene.world.gravity == Vec2{1, -2});
     CHECK(scene.world.timeStep == 0.1);
     CHECK(scene.world.method == Method::turnBased);
@@ -150,20 +152,28 @@ TEST_CASE("syntax errors carry toml++'s place and words", "[errors]") {
 TEST_CASE("a value of the wrong type names the type it got", "[errors]") {
     CHECK(errorOf(ballWith("radius = \"big\"")) == "s.toml:5:10: radius must be a number, got string");
     CHECK(errorOf(ballWith("radius = [1]")) == "s.toml:5:10: radius must be a number, got array");
-    CHECK(errorOf(ballWith("radius = 1\nvelocity = 3")) == "s.toml:6:12: velocity must be an array [x, y], got integer");
-    CHECK(errorOf(ballWith("radius = 1\nvelocity = [1, true]")) == "s.toml:6:16: velocity's y must be a number, got boolean");
-    CHECK(errorOf(ballWith("radius = 1\nvelocity = [1, 2, 3]")) == "s.toml:6:12: velocity must hold 2 numbers [x, y], got 3");
+    CHECK(errorOf(ballWith("radius = 1\nvelocity = 3")) ==
+          "s.toml:6:12: velocity must be an array [x, y], got integer");
+    CHECK(errorOf(ballWith("radius = 1\nvelocity = [1, true]")) ==
+          "s.toml:6:16: velocity's y must be a number, got boolean");
+    CHECK(errorOf(ballWith("radius = 1\nvelocity = [1, 2, 3]")) ==
+          "s.toml:6:12: velocity must hold 2 numbers [x, y], got 3");
     CHECK(errorOf("name = 3\n") == "s.toml:1:8: name must be a string, got integer");
     CHECK(errorOf("name = \"x\"\n[world]\nsubsteps = 2.5\n") == "s.toml:3:12: substeps must be an integer, got float");
-    CHECK(errorOf("name = \"x\"\ncircle = 3\n") == "s.toml:2:10: circle must be an array of tables, written [[circle]], got integer");
-    CHECK(errorOf("name = \"x\"\n[path]\nname = \"p\"\n") == "s.toml:2:1: path must be an array of tables, written [[path]], got table");
+    CHECK(errorOf("name = \"x\"\ncircle = 3\n") ==
+          "s.toml:2:10: circle must be an array of tables, written [[circle]], got integer");
+    CHECK(errorOf("name = \"x\"\n[path]\nname = \"p\"\n") ==
+          "s.toml:2:1: path must be an array of tables, written [[path]], got table");
 }
 
 TEST_CASE("a missing required key is reported at its table's header", "[errors]") {
     CHECK(errorOf(kBall) == "s.toml:3:1: missing required key 'radius' in [[circle]]");
-    CHECK(errorOf("[[circle]]\nposition = [0, 0]\nradius = 1\n") == "s.toml:1:1: missing required key 'name' at the top level");
-    CHECK(errorOf("name = \"x\"\n\n[[segment]]\na = [0, 0]\n") == "s.toml:3:1: missing required key 'b' in [[segment]]");
-    CHECK(errorOf("name = \"x\"\n[world]\nbounds = { min = [0, 0] }\n") == "s.toml:3:10: missing required key 'max' in world.bounds");
+    CHECK(errorOf("[[circle]]\nposition = [0, 0]\nradius = 1\n") ==
+          "s.toml:1:1: missing required key 'name' at the top level");
+    CHECK(errorOf("name = \"x\"\n\n[[segment]]\na = [0, 0]\n") ==
+          "s.toml:3:1: missing required key 'b' in [[segment]]");
+    CHECK(errorOf("name = \"x\"\n[world]\nbounds = { min = [0, 0] }\n") ==
+          "s.toml:3:10: missing required key 'max' in world.bounds");
 }
 
 TEST_CASE("an unknown key is an error, with the closest known key", "[errors]") {
@@ -171,13 +181,17 @@ TEST_CASE("an unknown key is an error, with the closest known key", "[errors]") 
     REQUIRE(errors.size() == 2); // the typo, and so radius is missing
     CHECK(errors[0] == "s.toml:3:1: missing required key 'radius' in [[circle]]");
     CHECK(errors[1] == "s.toml:5:1: unknown key 'raduis' in [[circle]] (did you mean 'radius'?)");
-    CHECK(errorOf(ballWith("radius = 1\n  Mass = 2")) == "s.toml:6:3: unknown key 'Mass' in [[circle]] (did you mean 'mass'?)");
+    CHECK(errorOf(ballWith("radius = 1\n  Mass = 2")) ==
+          "s.toml:6:3: unknown key 'Mass' in [[circle]] (did you mean 'mass'?)");
     CHECK(errorOf(ballWith("radius = 1\ncolour = 2")) ==
           "s.toml:6:1: unknown key 'colour' in [[circle]] (known keys: position, velocity, angular_velocity, inertia, "
           "radius, mass, bounciness, friction, motion, path)");
-    CHECK(errorOf("name = \"x\"\n[world]\ntimestep = 0.1\n") == "s.toml:3:1: unknown key 'timestep' in [world] (did you mean 'time_step'?)");
-    CHECK(errorOf("name = \"x\"\n[[circel]]\n") == "s.toml:2:3: unknown key 'circel' at the top level (did you mean 'circle'?)");
-    CHECK(errorOf("name = \"x\"\ngravity = [0, -1]\n") == "s.toml:2:1: unknown key 'gravity' at the top level (it belongs in [world])");
+    CHECK(errorOf("name = \"x\"\n[world]\ntimestep = 0.1\n") ==
+          "s.toml:3:1: unknown key 'timestep' in [world] (did you mean 'time_step'?)");
+    CHECK(errorOf("name = \"x\"\n[[circel]]\n") ==
+          "s.toml:2:3: unknown key 'circel' at the top level (did you mean 'circle'?)");
+    CHECK(errorOf("name = \"x\"\ngravity = [0, -1]\n") ==
+          "s.toml:2:1: unknown key 'gravity' at the top level (it belongs in [world])");
 }
 
 TEST_CASE("values out of range say the range and the value", "[errors]") {
@@ -186,30 +200,39 @@ TEST_CASE("values out of range say the range and the value", "[errors]") {
     CHECK(errorOf(ballWith("radius = nan")) == "s.toml:5:10: radius must be finite, got nan");
     CHECK(errorOf(ballWith("radius = inf")) == "s.toml:5:10: radius must be finite, got inf");
     CHECK(errorOf(ballWith("radius = 1\nmass = 0")) == "s.toml:6:8: mass must be between 1e-06 and 1e+06, got 0");
-    CHECK(errorOf(ballWith("radius = 1\nbounciness = 1.01")) == "s.toml:6:14: bounciness must be between 0 and 1, got 1.01");
-    CHECK(errorOf(ballWith("radius = 1\nbounciness = -0.1")) == "s.toml:6:14: bounciness must be between 0 and 1, got -0.1");
+    CHECK(errorOf(ballWith("radius = 1\nbounciness = 1.01")) ==
+          "s.toml:6:14: bounciness must be between 0 and 1, got 1.01");
+    CHECK(errorOf(ballWith("radius = 1\nbounciness = -0.1")) ==
+          "s.toml:6:14: bounciness must be between 0 and 1, got -0.1");
     CHECK(errorOf(ballWith("radius = 1\nfriction = -1")) == "s.toml:6:12: friction must be at least 0, got -1");
-    CHECK(errorOf(ballWith("radius = 1\nvelocity = [-inf, 0]")) == "s.toml:6:13: velocity's x must be finite, got -inf");
+    CHECK(errorOf(ballWith("radius = 1\nvelocity = [-inf, 0]")) ==
+          "s.toml:6:13: velocity's x must be finite, got -inf");
     CHECK(errorOf("name = \"x\"\n[world]\ntime_step = 0\n") == "s.toml:3:13: time_step must be greater than 0, got 0");
-    CHECK(errorOf("name = \"x\"\n[world]\nsubsteps = 0\n") == "s.toml:3:12: substeps must be between 1 and 1000, got 0");
+    CHECK(errorOf("name = \"x\"\n[world]\nsubsteps = 0\n") ==
+          "s.toml:3:12: substeps must be between 1 and 1000, got 0");
     CHECK(errorOf("name = \"x\"\n[world]\nmethod = \"exat\"\n") ==
-          "s.toml:3:10: method must be one of discrete, turn-based, exact, solver, auto, got 'exat' (did you mean 'exact'?)");
+          "s.toml:3:10: method must be one of discrete, turn-based, exact, solver, auto, got 'exat' (did you mean "
+          "'exact'?)");
     CHECK(errorOf("name = \"x\"\n[world]\nbounds = { min = [0, 0], max = [1, 0] }\n") ==
           "s.toml:3:32: bounds max must be greater than min in both x and y, got min [0, 0] and max [1, 0]");
     CHECK(errorOf("name = \"\"\n") == "s.toml:1:8: name must not be empty");
 }
 
 TEST_CASE("a segment of zero length is an error at its b", "[errors]") {
-    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [1, 2]\nb = [1, 2]\n") == "s.toml:4:5: b must differ from a: the segment has zero length");
-    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [0, 0]\nb = [1, 0]\nradius = -0.1\n") == "s.toml:5:10: radius must be between 0 and 10000, got -0.1");
+    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [1, 2]\nb = [1, 2]\n") ==
+          "s.toml:4:5: b must differ from a: the segment has zero length");
+    CHECK(errorOf("name = \"x\"\n[[segment]]\na = [0, 0]\nb = [1, 0]\nradius = -0.1\n") ==
+          "s.toml:5:10: radius must be between 0 and 10000, got -0.1");
 }
 
 TEST_CASE("a circle_grid must not start with its circles overlapping or be absurdly large", "[errors]") {
     const std::string grid = "name = \"x\"\n[[circle_grid]]\norigin = [0, 0]\nradius = 0.1\n";
     CHECK(errorOf(grid + "columns = 2\nrows = 1\nspacing = 0.15\n") ==
           "s.toml:7:11: spacing must be at least the diameter 0.2 so the circles do not start overlapping, got 0.15");
-    CHECK(errorOf(grid + "columns = 2\nrows = 2\nspacing = [0.2, -1]\n") == "s.toml:7:11: spacing's x and y must be greater than 0, got [0.2, -1]");
-    CHECK(errorOf(grid + "columns = 0\nrows = 2\nspacing = 1\n") == "s.toml:5:11: columns must be between 1 and 10000, got 0");
+    CHECK(errorOf(grid + "columns = 2\nrows = 2\nspacing = [0.2, -1]\n") ==
+          "s.toml:7:11: spacing's x and y must be greater than 0, got [0.2, -1]");
+    CHECK(errorOf(grid + "columns = 0\nrows = 2\nspacing = 1\n") ==
+          "s.toml:5:11: columns must be between 1 and 10000, got 0");
     CHECK(errorOf(grid + "columns = 1000\nrows = 1000\nspacing = 1\n") ==
           "s.toml:6:8: circle_grid makes 1000000 circles; one grid may make at most 100000");
 }
@@ -229,8 +252,9 @@ TEST_CASE("paths: bodies refer to them by name, and they must exist", "[paths]")
         CHECK(buildWorld(scene).paths().size() == 1);
     }
     SECTION("a fourth number in a key turns a segment about its pivot, in degrees") {
-        const SceneDesc scene = sceneOf("name = \"x\"\n[[path]]\nname = \"paddle\"\nkeys = [[0, 0, 0, -30], [1, 0, 0, 90]]\n"
-                                        "[[segment]]\na = [0, 0]\nb = [1, 0]\npath = \"paddle\"\npivot = 0\n");
+        const SceneDesc scene = sceneOf(
+            "name = \"x\"\n[[path]]\nname = \"paddle\"\nkeys = [[0, 0, 0, -30], [1, 0, 0, 90]]\n"
+            "[[segment]]\na = [0, 0]\nb = [1, 0]\npath = \"paddle\"\npivot = 0\n");
         CHECK(scene.paths[0].path.keys[0].angle == Approx(-std::numbers::pi / 6));
         CHECK(scene.paths[0].path.keys[1].angle == Approx(std::numbers::pi / 2));
         CHECK(scene.segments[0].pivotAlong == 0.0);
@@ -244,7 +268,8 @@ TEST_CASE("paths: bodies refer to them by name, and they must exist", "[paths]")
               "s.toml:9:8: unknown path 'lfit' (did you mean 'lift'?)");
         CHECK(errorOf(path + "[[segment]]\na = [0, 0]\nb = [1, 0]\npath = \"elevator\"\n") ==
               "s.toml:9:8: unknown path 'elevator' (defined paths: lift)");
-        CHECK(errorOf(ballWith("radius = 1\npath = \"lift\"")) == "s.toml:6:8: unknown path 'lift' (no [[path]] is defined)");
+        CHECK(errorOf(ballWith("radius = 1\npath = \"lift\"")) ==
+              "s.toml:6:8: unknown path 'lift' (no [[path]] is defined)");
     }
     SECTION("motion and path must agree") {
         CHECK(errorOf(ballWith("radius = 1\nmotion = \"kinematic\"")) ==
@@ -269,7 +294,8 @@ TEST_CASE("paths: bodies refer to them by name, and they must exist", "[paths]")
 }
 
 TEST_CASE("every error is listed, sorted from the top of the file", "[errors]") {
-    const auto errors = errorsOf("name = \"x\"\n[world]\ntime_step = 0\n[[circle]]\nposition = [0, 0]\nradius = -1\nmas = 2\n");
+    const auto errors = errorsOf(
+        "name = \"x\"\n[world]\ntime_step = 0\n[[circle]]\nposition = [0, 0]\nradius = -1\nmas = 2\n");
     REQUIRE(errors.size() == 3);
     CHECK(errors[0].starts_with("s.toml:3:13: time_step"));
     CHECK(errors[1].starts_with("s.toml:6:10: radius"));
@@ -293,10 +319,11 @@ TEST_CASE("typo suggestions are close matches only", "[errors]") {
 }
 
 TEST_CASE("[[rope]] joins a circle named or numbered to an anchor or another circle", "[scene][rope]") {
-    const std::string balls = "name = \"x\"\n"
-                              "[[circle]]\nname = \"bob\"\nposition = [0, 1]\nradius = 0.2\n"        // lines 2-5
-                              "[[circle]]\nposition = [0, 0]\nradius = 0.2\n"                        // lines 6-8
-                              "[[circle]]\nname = \"post\"\nposition = [3, 3]\nradius = 0.2\nmotion = \"static\"\n"; // 9-13
+    const std::string balls =
+        "name = \"x\"\n"
+        "[[circle]]\nname = \"bob\"\nposition = [0, 1]\nradius = 0.2\n"                        // lines 2-5
+        "[[circle]]\nposition = [0, 0]\nradius = 0.2\n"                                        // lines 6-8
+        "[[circle]]\nname = \"post\"\nposition = [3, 3]\nradius = 0.2\nmotion = \"static\"\n"; // 9-13
     SECTION("an anchor, the length taken from where the ends start") {
         const SceneDesc scene = sceneOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\n");
         REQUIRE(scene.ropes.size() == 1);
@@ -321,7 +348,8 @@ TEST_CASE("[[rope]] joins a circle named or numbered to an anchor or another cir
               "s.toml:15:10: circle must be a circle's index from 0 to 3 (exclusive) or its name, got 7");
         CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\nother = 1\n") ==
               "s.toml:16:10: a rope ends at an anchor or at another circle, not both: remove anchor or other");
-        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\n") == "s.toml:14:1: missing required key 'anchor' in [[rope]]");
+        CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\n") ==
+              "s.toml:14:1: missing required key 'anchor' in [[rope]]");
         CHECK(errorOf(balls + "[[rope]]\ncircle = \"post\"\nanchor = [0, 3]\n") ==
               "s.toml:15:10: a rope's circle must be dynamic (the rope pulls it); use other for a fixed end");
         CHECK(errorOf(balls + "[[rope]]\ncircle = \"bob\"\nanchor = [0, 3]\nlength = 1\n") ==
@@ -336,9 +364,10 @@ TEST_CASE("[[rope]] joins a circle named or numbered to an anchor or another cir
 }
 
 TEST_CASE("scene files: [[box]] is lecture 3's block with fixed_rotation = true, else it turns", "[scene][blocks]") {
-    const SceneLoad load = parseScene("name = \"b\"\n[[box]]\nposition = [1, 2]\nsize = [2, 0.5]\nmass = 3\nbounciness = 0.5\nfixed_rotation = true\n"
-                                      "[[box]]\nposition = [0, 0]\nsize = 1\nmotion = \"static\"\n",
-                                      "s.toml");
+    const SceneLoad load = parseScene(
+        "name = \"b\"\n[[box]]\nposition = [1, 2]\nsize = [2, 0.5]\nmass = 3\nbounciness = 0.5\nfixed_rotation = true\n"
+        "[[box]]\nposition = [0, 0]\nsize = 1\nmotion = \"static\"\n",
+        "s.toml");
     REQUIRE(load.ok());
     const auto& bodies = load.scene->bodies;
     REQUIRE(bodies.size() == 2);
@@ -350,5 +379,6 @@ TEST_CASE("scene files: [[box]] is lecture 3's block with fixed_rotation = true,
     CHECK(bodies[1].halfExtents == Vec2{0.5, 0.5});
     CHECK(bodies[1].motion == Motion::fixed);
     CHECK_FALSE(bodies[1].fixedRotation);
-    CHECK(errorOf("name = \"b\"\n[[box]]\nposition = [0, 1]\n") == "s.toml:2:1: give a box its size = [width, height] or its half_extents, one of them");
+    CHECK(errorOf("name = \"b\"\n[[box]]\nposition = [0, 1]\n") ==
+          "s.toml:2:1: give a box its size = [width, height] or its half_extents, one of them");
 }

@@ -30,7 +30,7 @@ constexpr render::FrameSize kFrameSize{640, 360};
 // best (trails where paths matter, impact markers where impacts do).
 struct Golden {
     const char* scene;
-    int frame;  // = steps taken, as with `rube run --every 1`
+    int frame; // = steps taken, as with `rube run --every 1`
     bool trails;
     bool impacts;
 };
@@ -60,14 +60,16 @@ render::Renderer& renderer() {
 }
 
 render::Image renderGolden(const Golden& golden) {
-    const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_LEVELS_DIR) / (std::string(golden.scene) + ".toml"));
+    const SceneLoad load = loadSceneFile(std::filesystem::path(RUBE_LEVELS_DIR) /
+                                         (std::string(golden.scene) + ".toml"));
     INFO((load.errors.empty() ? std::string("no errors") : load.errors.front().format()));
     REQUIRE(load.ok());
     World world = buildWorld(*load.scene);
     ViewOptions options;
     options.trails = golden.trails;
     options.impacts = golden.impacts;
-    SceneView view(load.scene->name, world, sceneCamera(frameScene(*load.scene, world), kFrameSize), kFrameSize, options);
+    SceneView view(load.scene->name, world, sceneCamera(frameScene(*load.scene, world), kFrameSize), kFrameSize,
+                   options);
     for (int step = 0; step < golden.frame; ++step) {
         world.step();
         view.afterStep(world);
@@ -82,9 +84,10 @@ void checkGoldens(std::string_view scene) {
     for (const Golden& golden : kGoldens) {
         if (golden.scene != scene) continue;
         ++checked;
-        const auto goldenPath = std::filesystem::path(RUBE_SCREENSHOTS_DIR) / render::goldenFileName(scene, golden.frame);
-        const render::ScreenshotCheck check =
-            render::checkScreenshot(renderGolden(golden), goldenPath, RUBE_SCREENSHOT_FAILURES_DIR);
+        const auto goldenPath = std::filesystem::path(RUBE_SCREENSHOTS_DIR) /
+                                render::goldenFileName(scene, golden.frame);
+        const render::ScreenshotCheck check = render::checkScreenshot(renderGolden(golden), goldenPath,
+                                                                      RUBE_SCREENSHOT_FAILURES_DIR);
         INFO(check.message);
         CHECK(check.passed);
     }

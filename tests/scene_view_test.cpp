@@ -55,7 +55,8 @@ TEST_CASE("[view] sets the framed region and is checked like bounds", "[view]") 
 
     const auto errors = parseScene("name = \"x\"\n[view]\nmin = [0, 0]\nmax = [1, 0]\n", "s.toml").errors;
     REQUIRE(errors.size() == 1);
-    CHECK(errors.front().format() == "s.toml:4:7: view max must be greater than min in both x and y, got min [0, 0] and max [1, 0]");
+    CHECK(errors.front().format() ==
+          "s.toml:4:7: view max must be greater than min in both x and y, got min [0, 0] and max [1, 0]");
     const auto unknown = parseScene("name = \"x\"\n[view]\nmin = [0, 0]\nmax = [1, 1]\nzoom = 2\n", "s.toml").errors;
     REQUIRE(unknown.size() == 1);
     CHECK(unknown.front().format().starts_with("s.toml:5:1: unknown key 'zoom' in [view]"));
@@ -157,9 +158,10 @@ TEST_CASE("trails follow each dynamic ball through its impacts and keep bounded 
 }
 
 TEST_CASE("impact markers show each pair's newest impact, for a while", "[view]") {
-    const SceneDesc scene = sceneOf("name = \"slide\"\n[world]\ngravity = [0, -10]\n"
-                                    "[[segment]]\na = [-40, 0]\nb = [40, 0]\n"
-                                    "[[circle]]\nposition = [0, 0.5]\nradius = 0.5\nvelocity = [2, 0]\nbounciness = 0\n");
+    const SceneDesc scene = sceneOf(
+        "name = \"slide\"\n[world]\ngravity = [0, -10]\n"
+        "[[segment]]\na = [-40, 0]\nb = [40, 0]\n"
+        "[[circle]]\nposition = [0, 0.5]\nradius = 0.5\nvelocity = [2, 0]\nbounciness = 0\n");
     World world = buildWorld(scene);
     RecentImpacts impacts(0.25, 100);
     int steps = 0;
@@ -190,7 +192,8 @@ TEST_CASE("frames are named as ffmpeg's frame_%05d.png reads them, and only thos
 
     const auto folder = std::filesystem::temp_directory_path() / ("rube-frames-" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
-    for (const char* name : {"frame_00000.png", "frame_00001.png", "keep.png", "frame_1.png"}) std::ofstream(folder / name) << "x";
+    for (const char* name : {"frame_00000.png", "frame_00001.png", "keep.png", "frame_1.png"})
+        std::ofstream(folder / name) << "x";
     CHECK(removeFrames(folder) == 2);
     CHECK(std::filesystem::exists(folder / "keep.png"));
     CHECK(std::filesystem::exists(folder / "frame_1.png"));

@@ -35,10 +35,7 @@ Renderer& renderer() {
     return instance;
 }
 
-Camera sceneCamera() {
-    return Camera::fitting(sceneRect, frameSize);
-}
-
+Camera sceneCamera() { return Camera::fitting(sceneRect, frameSize); }
 
 std::filesystem::path goldenPath(std::string_view scene, int frame) {
     return std::filesystem::path(RUBE_SCREENSHOTS_DIR) / goldenFileName(scene, frame);

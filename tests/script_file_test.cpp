@@ -41,8 +41,9 @@ std::string fields(const ScriptDesc& s) {
         << (s.size ? std::to_string(s.size->width) + "x" + std::to_string(s.size->height) : "-") << "\nevery "
         << (s.every ? std::to_string(*s.every) : "-") << '\n';
     for (const Placement& p : s.placements)
-        out << "place kind " << itemKindName(p.kind) << " position " << exact(p.position.x) << ' ' << exact(p.position.y) << " angle "
-            << exact(p.angle) << " degrees " << exact(p.angleDegrees) << " name '" << p.name << "'\n";
+        out << "place kind " << itemKindName(p.kind) << " position " << exact(p.position.x) << ' '
+            << exact(p.position.y) << " angle " << exact(p.angle) << " degrees " << exact(p.angleDegrees) << " name '"
+            << p.name << "'\n";
     for (const Action& a : s.actions)
         out << "action frame " << a.frame << " do " << actionVerb(a.kind) << " item '" << a.item << "' angle "
             << (a.angle ? exact(*a.angle) : "-") << " degrees " << exact(a.angleDegrees) << " point "
@@ -83,7 +84,8 @@ TEST_CASE("every shipped solution script reads, writes and reads back to the sam
     for (const auto& entry : std::filesystem::directory_iterator(kLevels)) {
         const std::string file = entry.path().filename().string();
         const std::string suffix = ".solution.toml";
-        if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+        if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
+            continue;
         const SceneDesc level = loadLevel(kLevels / (file.substr(0, file.size() - suffix.size()) + ".toml"));
         checkRoundTrip(readText(entry.path()), file, level);
         ++solutions;
@@ -97,15 +99,16 @@ TEST_CASE("every key a script may hold is written back as it was read", "[level]
     // turned placement, aims at an angle (with and without an arc), a point and an item, and
     // numbers that are not short in binary (0.1, 1/3 written out).
     const SceneDesc cannon = loadLevel(kLevels / "cannon-arc.toml");
-    checkRoundTrip("level = \"cannon-arc\"\nsteps = 900\n[capture]\nevery = 3\n"
-                   "[[action]]\nframe = 0\ndo = \"rotate\"\nitem = \"gun\"\nangle = 33.333333333333336\n"
-                   "[[action]]\nframe = 1\ndo = \"aim\"\nitem = \"gun\"\nangle = 40.1\narc = \"high\"\n"
-                   "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\npoint = [0.1, -2.7]\n"
-                   "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"low\"\n"
-                   "[[action]]\nframe = 3\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"bullseye\"\n"
-                   "[[action]]\nframe = 9\ndo = \"fire\"\nitem = \"gun\"\n"
-                   "[[expect]]\nshot = \"gun\"\nbefore_frame = 10\n[[expect]]\nhit = \"bullseye\"\nbefore_frame = 500\n",
-                   "cannon-arc every key", cannon);
+    checkRoundTrip(
+        "level = \"cannon-arc\"\nsteps = 900\n[capture]\nevery = 3\n"
+        "[[action]]\nframe = 0\ndo = \"rotate\"\nitem = \"gun\"\nangle = 33.333333333333336\n"
+        "[[action]]\nframe = 1\ndo = \"aim\"\nitem = \"gun\"\nangle = 40.1\narc = \"high\"\n"
+        "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\npoint = [0.1, -2.7]\n"
+        "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"low\"\n"
+        "[[action]]\nframe = 3\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"bullseye\"\n"
+        "[[action]]\nframe = 9\ndo = \"fire\"\nitem = \"gun\"\n"
+        "[[expect]]\nshot = \"gun\"\nbefore_frame = 10\n[[expect]]\nhit = \"bullseye\"\nbefore_frame = 500\n",
+        "cannon-arc every key", cannon);
     const SceneDesc chain = loadLevel(kLevels / "chain-reaction.toml");
     checkRoundTrip("level = \"chain-reaction\"\n[capture]\nsize = [320, 180]\n"
                    "[[place]]\nkind = \"heavy\"\nposition = [-4.05, 5.1]\nname = \"lump \\\"one\\\"\"\n"
@@ -116,8 +119,11 @@ TEST_CASE("every key a script may hold is written back as it was read", "[level]
     const SceneDesc rope = loadLevel(kLevels / "rope.toml");
     checkRoundTrip("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n", "rope cut", rope);
     const SceneDesc ramp = loadLevel(kLevels / "ramp.toml");
-    checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -29.5\n", "ramp turned", ramp);
+    checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -29.5\n",
+                   "ramp turned", ramp);
     // -0 keeps its sign (written as the integer 0 it would come back +0); a cannon aimed at -0 degrees.
-    checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -0.0\n", "ramp at -0", ramp);
-    checkRoundTrip("level = \"cannon-arc\"\n[[action]]\nframe = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = -0.0\n", "aim at -0", cannon);
+    checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -0.0\n", "ramp at -0",
+                   ramp);
+    checkRoundTrip("level = \"cannon-arc\"\n[[action]]\nframe = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = -0.0\n",
+                   "aim at -0", cannon);
 }

@@ -50,7 +50,8 @@ World makeBox(int count, double width, WorldDef def = sleepyDef()) {
 }
 
 int asleepCount(const World& world) {
-    return static_cast<int>(std::count_if(world.circles().begin(), world.circles().end(), [](const Circle& c) { return c.sleep.asleep; }));
+    return static_cast<int>(
+        std::count_if(world.circles().begin(), world.circles().end(), [](const Circle& c) { return c.sleep.asleep; }));
 }
 
 double largestOverlap(const World& world) {
@@ -75,14 +76,16 @@ int stepUntilAsleep(World& world, int maxSteps) {
 
 } // namespace
 
-TEST_CASE("a settled pile falls asleep as one island, only after every ball was slow for the time to sleep", "[sleep]") {
+TEST_CASE("a settled pile falls asleep as one island, only after every ball was slow for the time to sleep",
+          "[sleep]") {
     World world = makeBox(300, 3.0);
     const int needed = static_cast<int>(std::lround(world.def().timeToSleep / world.def().timeStep));
     std::vector<double> fastest; // per step: the fastest ball's speed (or its surface's spin speed)
     int firstAsleep = -1;
     for (int step = 0; step < 600 && firstAsleep < 0; ++step) {
         double v = 0.0;
-        for (const Circle& c : world.circles()) v = std::max({v, c.velocity.length(), std::abs(c.angularVelocity) * c.radius});
+        for (const Circle& c : world.circles())
+            v = std::max({v, c.velocity.length(), std::abs(c.angularVelocity) * c.radius});
         world.step();
         fastest.push_back(v);
         const int asleep = asleepCount(world);
@@ -128,7 +131,7 @@ TEST_CASE("a ball dropped on a sleeping pile wakes it and comes to rest on top w
     INFO("largest overlap after the drop: " << worst << " m");
     CHECK(worst < 0.005);
     const Circle& dropped = world.circles().back();
-    CHECK(dropped.position.y > top - 0.2); // on the pile, not inside it
+    CHECK(dropped.position.y > top - 0.2);                                 // on the pile, not inside it
     CHECK(asleepCount(world) == static_cast<int>(world.circles().size())); // and all asleep again
 }
 
@@ -145,7 +148,8 @@ TEST_CASE("an explosion wakes the island it pushes and leaves another island asl
     CHECK(world.circles()[1].sleep.island == world.circles()[2].sleep.island);
     CHECK(world.circles()[0].sleep.island != world.circles()[1].sleep.island);
     const Vec2 right = world.circles()[1].position;
-    const std::vector<CircleId> pushed = applyExplosion(world, Explosion{.centre = {-3.5, 0.1}, .radius = 1.0, .strength = 0.2});
+    const std::vector<CircleId> pushed = applyExplosion(
+        world, Explosion{.centre = {-3.5, 0.1}, .radius = 1.0, .strength = 0.2});
     REQUIRE(pushed == std::vector<CircleId>{world.circleId(0)});
     world.step();
     CHECK_FALSE(world.circles()[0].sleep.asleep);
@@ -202,7 +206,7 @@ TEST_CASE("a bullet into a sleeping ball hits it", "[sleep]") {
     world.addCircle(bullet);
     world.step();
     world.step();
-    CHECK(world.circles()[0].velocity.x > 1.0);           // struck
+    CHECK(world.circles()[0].velocity.x > 1.0);                           // struck
     CHECK(world.circles()[1].position.x < world.circles()[0].position.x); // not through it
 }
 
@@ -264,12 +268,14 @@ Slide slideDown(Method method, double degrees, double seconds) {
 
 } // namespace
 
-TEST_CASE("a frictionless ball on a shallow incline slides as g sin(theta) t^2 / 2: slow is not asleep", "[sleep][incline]") {
+TEST_CASE("a frictionless ball on a shallow incline slides as g sin(theta) t^2 / 2: slow is not asleep",
+          "[sleep][incline]") {
     // 0.01 degree pushes it 1.7 mm/s^2 along the line: under sleep_speed for its first 5.9 s.
     for (const Method method : {Method::solver, Method::automatic}) {
         for (const double degrees : {0.01, 0.02, 0.05, 0.1, 0.12, 0.2, 0.5, 1.0}) {
             const Slide slide = slideDown(method, degrees, 10.0);
-            INFO(methodName(method) << ", " << degrees << " degrees: slid " << slide.travelled << " m, expected " << slide.expected);
+            INFO(methodName(method) << ", " << degrees << " degrees: slid " << slide.travelled << " m, expected "
+                                    << slide.expected);
             CHECK_FALSE(slide.everAsleep);
             CHECK(slide.travelled == Approx(slide.expected).epsilon(0.01));
         }
@@ -302,7 +308,8 @@ TEST_CASE("a ball at rest on a level floor or in a bowl is held there and sleeps
         dropped.material = {0.0, friction};
         bowl.addCircle(dropped);
         const int steps = stepUntilAsleep(bowl, 3600);
-        INFO("asleep after " << steps << " steps at " << bowl.circles()[0].position.x << ", " << bowl.circles()[0].position.y);
+        INFO("asleep after " << steps << " steps at " << bowl.circles()[0].position.x << ", "
+                             << bowl.circles()[0].position.y);
         CHECK(steps <= 3600);
         CHECK(std::abs(bowl.circles()[0].position.x) < 0.2 + 1e-9); // on the flat bottom
     }

@@ -32,7 +32,8 @@ struct Miss {
 };
 
 Miss miss(Vec2 got, Vec2 exact) {
-    return {std::abs(std::atan2(exact.cross(got), exact.dot(got))) * kDegrees, std::abs(got.length() / exact.length() - 1.0)};
+    return {std::abs(std::atan2(exact.cross(got), exact.dot(got))) * kDegrees,
+            std::abs(got.length() / exact.length() - 1.0)};
 }
 
 /// Weightless, so every velocity after the bounce stays as the bounce left it.
@@ -74,8 +75,9 @@ TEST_CASE("solver: a ball striking a line cap leaves along the exact reflection 
                         const Vec2 n = touch / reach;
                         const Vec2 exact = v - n * ((1.0 + bounciness) * v.dot(n));
                         const Miss m = miss(world.circles()[0].velocity, exact);
-                        INFO(methodName(method) << ": C " << bounciness << ", " << speed << " m/s, offset " << offset << ", touching "
-                                                << fraction << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
+                        INFO(methodName(method)
+                             << ": C " << bounciness << ", " << speed << " m/s, offset " << offset << ", touching "
+                             << fraction << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
                         CHECK(m.degrees < 0.5);
                         CHECK(m.speed < 0.005);
                     }
@@ -85,7 +87,8 @@ TEST_CASE("solver: a ball striking a line cap leaves along the exact reflection 
     }
 }
 
-TEST_CASE("solver: two balls leave a glancing impact with momentum and restitution along the line of centres", "[solver][bounce]") {
+TEST_CASE("solver: two balls leave a glancing impact with momentum and restitution along the line of centres",
+          "[solver][bounce]") {
     // Ball A (1 kg, r = 0.1) strikes ball B (2 kg, r = 0.15) at rest, `parameter` of the sum of the
     // radii off centre: at the time of impact n = (pA - pB) / R, and the impulse
     // J = -(1 + C) (vA . n) / (1/mA + 1/mB) moves A by J n / mA and B by -J n / mB.
@@ -110,9 +113,10 @@ TEST_CASE("solver: two balls leave a glancing impact with momentum and restituti
                         const double impulse = -(1.0 + bounciness) * v.dot(n) / (1.0 + 0.5);
                         const Miss missA = miss(world.circles()[0].velocity, v + n * impulse);
                         const Miss missB = miss(world.circles()[1].velocity, n * (-impulse / 2.0));
-                        INFO(methodName(method) << ": C " << bounciness << ", " << speed << " m/s, parameter " << parameter << ", touching "
-                                                << fraction << " into a step: A " << missA.degrees << " degrees, speed off " << missA.speed
-                                                << "; B " << missB.degrees << " degrees, speed off " << missB.speed);
+                        INFO(methodName(method) << ": C " << bounciness << ", " << speed << " m/s, parameter "
+                                                << parameter << ", touching " << fraction << " into a step: A "
+                                                << missA.degrees << " degrees, speed off " << missA.speed << "; B "
+                                                << missB.degrees << " degrees, speed off " << missB.speed);
                         CHECK(missA.degrees < 0.5);
                         CHECK(missA.speed < 0.005);
                         CHECK(missB.degrees < 0.5);
@@ -124,7 +128,8 @@ TEST_CASE("solver: two balls leave a glancing impact with momentum and restituti
     }
 }
 
-TEST_CASE("solver: a ball bouncing on a tilted line leaves along the exact reflection at every speed", "[solver][bounce]") {
+TEST_CASE("solver: a ball bouncing on a tilted line leaves along the exact reflection at every speed",
+          "[solver][bounce]") {
     // A line tilted 17 degrees; the ball comes in at 20 to 160 degrees to it.
     const double tilt = 17.0 / kDegrees;
     const Vec2 along{std::cos(tilt), std::sin(tilt)}, n{-std::sin(tilt), std::cos(tilt)};
@@ -145,8 +150,9 @@ TEST_CASE("solver: a ball bouncing on a tilted line leaves along the exact refle
                     runPast(world, fraction);
                     const Vec2 exact = v - n * ((1.0 + 0.7) * v.dot(n));
                     const Miss m = miss(world.circles()[0].velocity, exact);
-                    INFO(methodName(method) << ": " << speed << " m/s at " << incoming << " degrees, touching " << fraction
-                                            << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
+                    INFO(methodName(method)
+                         << ": " << speed << " m/s at " << incoming << " degrees, touching " << fraction
+                         << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
                     CHECK(m.degrees < 0.5);
                     CHECK(m.speed < 0.005);
                 }
@@ -187,13 +193,15 @@ struct WorstPerSpeed {
     ~WorstPerSpeed() {
         if (!std::getenv("RUBE_PRINT_BOUNCES")) return;
         for (std::size_t i = 0; i < kSpeeds.size(); ++i)
-            std::printf("%s %6.1f m/s: %.3g degrees, %.3g %%\n", name, kSpeeds[i], worst[i].degrees, 100.0 * worst[i].speed);
+            std::printf("%s %6.1f m/s: %.3g degrees, %.3g %%\n", name, kSpeeds[i], worst[i].degrees,
+                        100.0 * worst[i].speed);
     }
 };
 
 } // namespace
 
-TEST_CASE("solver: under gravity a ball bouncing on a tilted line leaves as the exact method's does", "[solver][bounce]") {
+TEST_CASE("solver: under gravity a ball bouncing on a tilted line leaves as the exact method's does",
+          "[solver][bounce]") {
     // The 17-degree line of the weightless case, now with g = 9.81 m/s^2, against the exact method
     // (analytic flight and time of impact), both started from the same given state (x0, v0) one step
     // and a fraction before the touch and compared one step after it. The solver flies a lone ball
@@ -222,8 +230,8 @@ TEST_CASE("solver: under gravity a ball bouncing on a tilted line leaves as the 
                 };
                 const Miss m = miss(run(Method::solver), run(Method::exact));
                 worst.add(s, m);
-                INFO(speed << " m/s at " << incoming << " degrees, touching " << fraction << " into a step: " << m.degrees
-                           << " degrees, speed off " << m.speed);
+                INFO(speed << " m/s at " << incoming << " degrees, touching " << fraction
+                           << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
                 CHECK(m.degrees < 0.5);
                 CHECK(m.speed < 0.005);
             }
@@ -262,8 +270,8 @@ TEST_CASE("solver: under gravity a ball striking a line cap leaves as the exact 
                     if (-v.dot(n) < kRestingMargin * restingSpeed) continue;
                     const Miss m = miss(run(Method::solver), run(Method::exact));
                     worst.add(s, m);
-                    INFO("C " << bounciness << ", " << speed << " m/s, offset " << offset << ", touching " << fraction << " into a step: "
-                              << m.degrees << " degrees, speed off " << m.speed);
+                    INFO("C " << bounciness << ", " << speed << " m/s, offset " << offset << ", touching " << fraction
+                              << " into a step: " << m.degrees << " degrees, speed off " << m.speed);
                     CHECK(m.degrees < 0.5);
                     CHECK(m.speed < 0.005);
                 }
@@ -298,14 +306,16 @@ TEST_CASE("solver: under gravity two balls leave a glancing impact as the exact 
                         for (int step = 0; step < 3; ++step) world.step();
                         return std::vector<Vec2>{world.circles()[0].velocity, world.circles()[1].velocity};
                     };
-                    if (-v.dot(offsetAtImpact / reach) < kRestingMargin * restingSpeed) continue; // resting contact, as on the cap
+                    if (-v.dot(offsetAtImpact / reach) < kRestingMargin * restingSpeed)
+                        continue; // resting contact, as on the cap
                     const std::vector<Vec2> got = run(Method::solver);
                     const std::vector<Vec2> exact = run(Method::exact);
                     for (std::size_t i = 0; i < 2; ++i) {
                         const Miss m = miss(got[i], exact[i]);
                         worst.add(s, m);
-                        INFO("C " << bounciness << ", " << speed << " m/s, parameter " << parameter << ", touching " << fraction
-                                  << " into a step: ball " << i << " " << m.degrees << " degrees, speed off " << m.speed);
+                        INFO("C " << bounciness << ", " << speed << " m/s, parameter " << parameter << ", touching "
+                                  << fraction << " into a step: ball " << i << " " << m.degrees
+                                  << " degrees, speed off " << m.speed);
                         CHECK(m.degrees < 0.5);
                         CHECK(m.speed < 0.005);
                     }

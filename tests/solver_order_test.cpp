@@ -12,7 +12,8 @@ using namespace rube;
 namespace {
 
 /// A contact from circle a to body b, warm started with `impulse`, tagged by `id` in its record.
-void addContact(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records, int a, int b, double impulse, int id) {
+void addContact(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records, int a, int b,
+                double impulse, int id) {
     ContactConstraint c;
     c.a = a;
     c.b = b;

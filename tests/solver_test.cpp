@@ -35,7 +35,9 @@ double largestOverlap(const World& world) {
             if (d2 < reach * reach) worst = std::max(worst, reach - std::sqrt(d2));
         }
         for (const Segment& s : world.segments())
-            worst = std::max(worst, circles[i].radius + s.radius - circles[i].position.distance(closestPointOnSegment(circles[i].position, s.a, s.b)));
+            worst = std::max(worst,
+                             circles[i].radius + s.radius -
+                                 circles[i].position.distance(closestPointOnSegment(circles[i].position, s.a, s.b)));
     }
     return worst;
 }
@@ -266,7 +268,7 @@ TEST_CASE("balls do not pass through each other", "[solver][continuous]") {
             worst = std::max(worst, largestOverlap(world));
             for (const Circle& c : world.circles()) REQUIRE(c.position.x < 3.0); // none through the wall
         }
-        CHECK(worst < 0.025); // a quarter radius at 100 m/s: squeezed, never through
+        CHECK(worst < 0.025);                                    // a quarter radius at 100 m/s: squeezed, never through
         for (std::size_t i = 1; i < world.circles().size(); ++i) // the row keeps its order
             CHECK(world.circles()[i].position.x < world.circles()[i - 1].position.x);
     }
@@ -326,7 +328,8 @@ TEST_CASE("an impact is recorded with its time, point, normal and approach speed
     CHECK(hit.approachSpeed == Approx(9.81 * fallTime).epsilon(0.01));
     CHECK(world.stats().impacts == 1);
     // Bounced at its time of impact (v' = C u, lecture 3), then falling for the rest of the step.
-    CHECK(world.circles()[0].velocity.y == Approx(0.5 * hit.approachSpeed - 9.81 * (world.time() - hit.time)).epsilon(0.01));
+    CHECK(world.circles()[0].velocity.y ==
+          Approx(0.5 * hit.approachSpeed - 9.81 * (world.time() - hit.time)).epsilon(0.01));
 }
 
 TEST_CASE("large and long shapes are found by the grid", "[solver][broadphase]") {

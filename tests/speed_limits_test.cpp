@@ -59,7 +59,8 @@ TEST_CASE("limits: speeds under the limits are left alone and never counted", "[
         def.method = Method::solver;
         def.gravity = {};
         World world(def);
-        world.addBody(capsule({0.0, 0.0}, fraction * def.maxRotation / def.timeStep, {fraction * def.maxTranslation / def.timeStep, 0.0}));
+        world.addBody(capsule({0.0, 0.0}, fraction * def.maxRotation / def.timeStep,
+                              {fraction * def.maxTranslation / def.timeStep, 0.0}));
         const double omega = world.bodies()[0].angularVelocity;
         for (int i = 0; i < 10; ++i) world.step();
         CHECK(world.bodies()[0].angularVelocity == omega);
@@ -67,7 +68,8 @@ TEST_CASE("limits: speeds under the limits are left alone and never counted", "[
     }
 }
 
-TEST_CASE("limits: a body that goes non-finite is frozen where it was and never reaches the others", "[limits][robustness]") {
+TEST_CASE("limits: a body that goes non-finite is frozen where it was and never reaches the others",
+          "[limits][robustness]") {
     // The issue's case: an unstable capsule beside a ball resting on the floor, another ball 6 m away.
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();

@@ -243,8 +243,8 @@ TEST_CASE("under gravity: circle against a point or circle is a quartic", "[toi]
     }
     SECTION("a thrown ball: d(t) = (-3 + 6t, 3t - 3t^2) reaches |d|^2 = 13/9 at t = 1/3") {
         const CircleMotion thrown{{-3, 0}, {6, 3}, 0.0, {0, -6}};
-        const auto hit = circlePointCollision({thrown.centre, thrown.velocity, std::sqrt(13.0) / 3, thrown.acceleration},
-                                              {0, 0}, 1.0);
+        const auto hit = circlePointCollision(
+            {thrown.centre, thrown.velocity, std::sqrt(13.0) / 3, thrown.acceleration}, {0, 0}, 1.0);
         REQUIRE(hit);
         CHECK(hit->timeOfImpact == Approx(1.0 / 3).epsilon(1e-14));
         CHECK(approxEqual(hit->pointOfImpact, {-1, 2.0 / 3}, 1e-12));

@@ -37,10 +37,10 @@ TEST_CASE("Vec2 arithmetic", "[vec2]") {
 
 TEST_CASE("Vec2 dot and cross", "[vec2]") {
     STATIC_REQUIRE(Vec2{1, 2}.dot(Vec2{3, 4}) == 11);
-    STATIC_REQUIRE(Vec2{1, 0}.dot(Vec2{0, 1}) == 0);        // perpendicular
-    STATIC_REQUIRE(Vec2{1, 0}.cross(Vec2{0, 1}) == 1);      // counter-clockwise is positive
+    STATIC_REQUIRE(Vec2{1, 0}.dot(Vec2{0, 1}) == 0);   // perpendicular
+    STATIC_REQUIRE(Vec2{1, 0}.cross(Vec2{0, 1}) == 1); // counter-clockwise is positive
     STATIC_REQUIRE(Vec2{0, 1}.cross(Vec2{1, 0}) == -1);
-    STATIC_REQUIRE(Vec2{2, 3}.cross(Vec2{4, 6}) == 0);      // parallel
+    STATIC_REQUIRE(Vec2{2, 3}.cross(Vec2{4, 6}) == 0); // parallel
     CHECK(Vec2{}.dot(Vec2{5, 5}) == 0);
     CHECK(Vec2{}.cross(Vec2{5, 5}) == 0);
 }
@@ -62,7 +62,7 @@ TEST_CASE("Vec2 length and squared length", "[vec2]") {
 
 TEST_CASE("Vec2 safe normalize", "[vec2]") {
     CHECK(approxEqual(Vec2{3, 4}.normalized(), {0.6, 0.8}));
-    CHECK(Vec2{}.normalized() == Vec2{});          // zero stays zero, never NaN
+    CHECK(Vec2{}.normalized() == Vec2{}); // zero stays zero, never NaN
     CHECK(Vec2{kHuge, kHuge}.normalized().length() == Approx(1.0));
     CHECK(Vec2{kTiny, -kTiny}.normalized().length() == Approx(1.0));
     CHECK(approxEqual(Vec2{-kTiny, 0}.normalized(), {-1, 0}));
@@ -71,7 +71,7 @@ TEST_CASE("Vec2 safe normalize", "[vec2]") {
 TEST_CASE("Vec2 perpendicular and normal", "[vec2]") {
     STATIC_REQUIRE(Vec2{1, 2}.perpendicular() == Vec2{-2, 1});
     CHECK(Vec2{1, 2}.perpendicular().dot(Vec2{1, 2}) == 0);
-    CHECK(approxEqual(Vec2{4, 0}.normal(), {0, 1}));   // left-hand normal of a line going right
+    CHECK(approxEqual(Vec2{4, 0}.normal(), {0, 1})); // left-hand normal of a line going right
     CHECK(approxEqual(Vec2{0, -2}.normal(), {1, 0}));
     CHECK(Vec2{}.normal() == Vec2{});
 }
@@ -103,9 +103,9 @@ TEST_CASE("Vec2 scalar and vector projection", "[vec2]") {
 
 TEST_CASE("Vec2 reflect with bounciness", "[vec2]") {
     const Vec2 up{0, 1};
-    CHECK(approxEqual(Vec2{2, -3}.reflected(up), {2, 3}));             // C = 1: mirror
-    CHECK(approxEqual(Vec2{2, -3}.reflected(up, 0.5), {2, 1.5}));      // C = 0.5: half the normal speed
-    CHECK(approxEqual(Vec2{2, -3}.reflected(up, 0.0), {2, 0}));        // C = 0: slides along
+    CHECK(approxEqual(Vec2{2, -3}.reflected(up), {2, 3}));        // C = 1: mirror
+    CHECK(approxEqual(Vec2{2, -3}.reflected(up, 0.5), {2, 1.5})); // C = 0.5: half the normal speed
+    CHECK(approxEqual(Vec2{2, -3}.reflected(up, 0.0), {2, 0}));   // C = 0: slides along
     const Vec2 n = Vec2{1, 1}.normalized();
     const Vec2 v{-3, -1};
     CHECK(v.reflected(n).length() == Approx(v.length())); // elastic keeps the speed
@@ -119,8 +119,8 @@ TEST_CASE("lerp, distance and approximate equality", "[vec2]") {
     CHECK(Vec2{1, 1}.distance({4, 5}) == 5);
     CHECK(approxEqual({1, 1}, {1 + 1e-12, 1}));
     CHECK_FALSE(approxEqual({1, 1}, {1 + 1e-6, 1}));
-    CHECK(approxEqual({1e12, 0}, {1e12 + 1, 0}));           // relative for large values
-    CHECK_FALSE(approxEqual({0, 0}, {0, 1e-3}, 1e-4));       // absolute near zero
+    CHECK(approxEqual({1e12, 0}, {1e12 + 1, 0}));      // relative for large values
+    CHECK_FALSE(approxEqual({0, 0}, {0, 1e-3}, 1e-4)); // absolute near zero
     CHECK(isFinite({1, 2}));
     CHECK_FALSE(isFinite({std::numeric_limits<double>::quiet_NaN(), 0}));
     CHECK_FALSE(isFinite({0, std::numeric_limits<double>::infinity()}));

@@ -48,7 +48,8 @@ void dragTo(PlaySession& session, render::Point from, render::Point to) {
     session.mouseButton(MouseButton::left, true);
     // The way a hand moves: several cursor events on the way, each checked as the drag goes.
     for (int i = 1; i <= 4; ++i)
-        moveTo(session, {from.x + (to.x - from.x) * static_cast<float>(i) / 4.0f, from.y + (to.y - from.y) * static_cast<float>(i) / 4.0f});
+        moveTo(session, {from.x + (to.x - from.x) * static_cast<float>(i) / 4.0f,
+                         from.y + (to.y - from.y) * static_cast<float>(i) / 4.0f});
 }
 
 } // namespace
@@ -108,34 +109,32 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     std::vector<render::Image> windowFrames;
     while (session.run()->frame() < kCompared[1]) {
         session.step();
-        if (session.run()->frame() == kCompared[0] || session.run()->frame() == kCompared[1])
-        {
+        if (session.run()->frame() == kCompared[0] || session.run()->frame() == kCompared[1]) {
             const render::Image whole = show();
             render::writePng(kWork / ("window-step-" + std::to_string(session.run()->frame()) + ".png"), whole);
             windowFrames.push_back(levelArea(whole, frame));
-        }
-        else if (session.run()->frame() % 20 == 0)
-            show();
+        } else if (session.run()->frame() % 20 == 0) show();
     }
     REQUIRE(session.run()->goalFrame());
 
     // The recording, replayed by `rube run` off-screen.
     const std::filesystem::path script = kWork / "ramp.recorded.toml";
     std::ofstream(script) << session.recordedScript();
-    const std::string command = std::string("\"") + RUBE_BINARY + "\" run \"" + (kLevels / "ramp.toml").string() + "\" --script \"" +
-                                script.string() + "\" --out \"" + (kWork / "frames").string() + "\" > \"" +
-                                (kWork / "replay.txt").string() + "\" 2>&1";
+    const std::string command = std::string("\"") + RUBE_BINARY + "\" run \"" + (kLevels / "ramp.toml").string() +
+                                "\" --script \"" + script.string() + "\" --out \"" + (kWork / "frames").string() +
+                                "\" > \"" + (kWork / "replay.txt").string() + "\" 2>&1";
     INFO(command);
     REQUIRE(std::system(command.c_str()) == 0);
     std::ifstream replay(kWork / "replay.txt");
     const std::string printed((std::istreambuf_iterator<char>(replay)), std::istreambuf_iterator<char>());
-    CHECK_THAT(printed, Catch::Contains("goal:             reached at frame " + std::to_string(*session.run()->goalFrame())));
+    CHECK_THAT(printed,
+               Catch::Contains("goal:             reached at frame " + std::to_string(*session.run()->goalFrame())));
 
     for (std::size_t i = 0; i < windowFrames.size(); ++i) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(kCompared[i]));
-        const render::ScreenshotCheck check =
-            render::checkScreenshot(windowFrames[i], kWork / "frames" / name, RUBE_SCREENSHOT_FAILURES_DIR "/window-play");
+        const render::ScreenshotCheck check = render::checkScreenshot(windowFrames[i], kWork / "frames" / name,
+                                                                      RUBE_SCREENSHOT_FAILURES_DIR "/window-play");
         INFO("step " << kCompared[i] << ": " << check.message);
         CHECK(check.passed);
         CHECK_FALSE(check.goldenWritten);
@@ -177,14 +176,15 @@ TEST_CASE("a cannon aimed with the mouse and fired by a click replays to the sam
     std::ofstream(script) << session.recordedScript();
     const std::filesystem::path out = kWork / "cannon-frames";
     const std::string command = std::string("\"") + RUBE_BINARY + "\" run \"" + (kLevels / "cannon-arc.toml").string() +
-                                "\" --script \"" + script.string() + "\" --out \"" + out.string() + "\" --frames 121 > /dev/null 2>&1";
+                                "\" --script \"" + script.string() + "\" --out \"" + out.string() +
+                                "\" --frames 121 > /dev/null 2>&1";
     INFO(command);
     // The shot misses the bullseye (the goal is not this test's business): exit 1 is fine, 2 is not.
     const int status = std::system(command.c_str());
     REQUIRE(WIFEXITED(status));
     REQUIRE(WEXITSTATUS(status) != 2);
-    const render::ScreenshotCheck check =
-        render::checkScreenshot(levelArea(image, frame), out / "frame_00120.png", RUBE_SCREENSHOT_FAILURES_DIR "/window-play-cannon");
+    const render::ScreenshotCheck check = render::checkScreenshot(levelArea(image, frame), out / "frame_00120.png",
+                                                                  RUBE_SCREENSHOT_FAILURES_DIR "/window-play-cannon");
     INFO(check.message);
     CHECK(check.passed);
 }

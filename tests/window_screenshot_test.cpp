@@ -26,9 +26,9 @@ TEST_CASE("render-basics drawn in a GLFW window matches the off-screen golden", 
         renderer.draw(renderBasics(), camera);
         Image image;
         window->readPixels(image);
-        const ScreenshotCheck check =
-            checkScreenshot(image, std::filesystem::path(RUBE_SCREENSHOTS_DIR) / goldenFileName("render-basics", 0),
-                            RUBE_SCREENSHOT_FAILURES_DIR "/window");
+        const ScreenshotCheck check = checkScreenshot(
+            image, std::filesystem::path(RUBE_SCREENSHOTS_DIR) / goldenFileName("render-basics", 0),
+            RUBE_SCREENSHOT_FAILURES_DIR "/window");
         INFO(check.message);
         CHECK(check.passed);
         CHECK_FALSE(check.goldenWritten);

@@ -62,7 +62,8 @@ TEST_CASE("handles: a far body removed at step k leaves a world bit-identical to
         for (const Method method : kMethods) {
             CAPTURE(seed, methodName(method));
             FarBodies far;
-            RandomScene with = makeRandomScene(seed, [&](World& world, Vec2 size) { far = addFarBodies(world, {-0.8 * size.x, -0.5 * size.y}, Motion::fixed);
+            RandomScene with = makeRandomScene(seed, [&](World& world, Vec2 size) {
+                far = addFarBodies(world, {-0.8 * size.x, -0.5 * size.y}, Motion::fixed);
             });
             RandomScene without = makeRandomScene(seed);
             if (with.turning && !movesTurningBodies(method)) continue;
@@ -93,7 +94,8 @@ TEST_CASE("handles: a far body removed at step k leaves a world bit-identical to
             addPile(without, 5);
             for (int step = 0; step < 320; ++step) {
                 if (step == at) {
-                    if (method == Method::solver && at > 100) CHECK(with.circles()[1].sleep.asleep); // removed while the pile sleeps
+                    if (method == Method::solver && at > 100)
+                        CHECK(with.circles()[1].sleep.asleep); // removed while the pile sleeps
                     with.remove(far.ball);
                 }
                 if (step == at + 1) {
@@ -109,7 +111,8 @@ TEST_CASE("handles: a far body removed at step k leaves a world bit-identical to
     }
 }
 
-TEST_CASE("handles: a far rigid body removed from a stack's world leaves no trace under solver and auto", "[handles][rigid]") {
+TEST_CASE("handles: a far rigid body removed from a stack's world leaves no trace under solver and auto",
+          "[handles][rigid]") {
     for (const Method method : {Method::solver, Method::automatic}) {
         CAPTURE(methodName(method));
         WorldDef def;
@@ -329,7 +332,8 @@ TEST_CASE("handles: a lone ball's flight under gravity scale s is x0 + v0 t + s 
     }
 }
 
-TEST_CASE("handles: an impact leads to its circle's handle and user value, also after a removal renumbers the slots", "[handles]") {
+TEST_CASE("handles: an impact leads to its circle's handle and user value, also after a removal renumbers the slots",
+          "[handles]") {
     World world;
     world.addSegment(line({-5.0, 0.0}, {5.0, 0.0}));
     const CircleId gone = world.addCircle(ball({-2.0, 0.5}, {0.0, -5.0}, 0.5)); // both land in the first step

@@ -133,7 +133,8 @@ Outcome speedProbe(Method method, double travelPerRadius, int phases) {
         const double startY = r + travel * (3.0 + static_cast<double>(k) / phases);
         addBall(world, {0.0, startY}, {0.0, -speed}, r, 1.0, 1.0);
         // Below the thin line at y = 0 the ball can only be by passing through it.
-        const Outcome out = watch(world, 8, [](const World& w) { return w.circles()[0].position.y < 0.0; }, true);
+        const Outcome out = watch(
+            world, 8, [](const World& w) { return w.circles()[0].position.y < 0.0; }, true);
         if (out.failed()) return out;
         worst.deepestOverlap = std::max(worst.deepestOverlap, out.deepestOverlap);
         worst.energyGain = std::max(worst.energyGain, out.energyGain);
@@ -160,7 +161,8 @@ Outcome bouncinessProbe(Method method, double bounciness) {
     constexpr double gap = 0.1;
     World world = makeWorld(method, kGravity);
     addFloor(world);
-    for (int i = 0; i < 4; ++i) addBall(world, {0.0, kRadius + gap + (2.0 * kRadius + gap) * i}, {}, kRadius, 1.0, bounciness);
+    for (int i = 0; i < 4; ++i)
+        addBall(world, {0.0, kRadius + gap + (2.0 * kRadius + gap) * i}, {}, kRadius, 1.0, bounciness);
     return watch(world, static_cast<int>(std::lround(3.0 / kTimeStep)), columnBroken, false);
 }
 
@@ -189,7 +191,10 @@ Outcome inclineProbe(Method method, double degrees) {
     world.addSegment(line);
     const Vec2 start = down * -300.0 + normal * r;
     addBall(world, start, {}, r, 1.0, 0.0);
-    const auto e = [&] { const Circle& c = world.circles()[0]; return kGravity * c.position.y + 0.5 * c.velocity.lengthSquared(); };
+    const auto e = [&] {
+        const Circle& c = world.circles()[0];
+        return kGravity * c.position.y + 0.5 * c.velocity.lengthSquared();
+    };
     const double e0 = e();
     Outcome out;
     const int steps = static_cast<int>(std::lround(10.0 / kTimeStep));

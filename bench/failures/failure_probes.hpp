@@ -11,15 +11,15 @@ namespace bench::failures {
 
 /// What went wrong in a probe run; several may happen in the same step.
 struct Outcome {
-    bool tunnels = false;     ///< a ball ended on the far side of the line it came at
-    bool sinks = false;       ///< a resting ball went through the floor or through the ball beneath it
-    bool overlaps = false;    ///< two shapes overlapped by more than 5 % of a radius after a step
-    bool gainsEnergy = false; ///< the total energy rose above its start by more than 1 %
-    bool eventCap = false;    ///< a step hit the exact method's impact cap (maxEventsPerStep)
-    bool nonFinite = false;   ///< a NaN or infinity appeared
-    double deepestOverlap = 0.0; ///< the largest overlap seen, as a fraction of the radius
-    double energyGain = 0.0;     ///< the largest rise of the energy over its start, relative
-    bool misdirected = false;    ///< a bounce left more than 0.5 degrees off the exact reflection
+    bool tunnels = false;         ///< a ball ended on the far side of the line it came at
+    bool sinks = false;           ///< a resting ball went through the floor or through the ball beneath it
+    bool overlaps = false;        ///< two shapes overlapped by more than 5 % of a radius after a step
+    bool gainsEnergy = false;     ///< the total energy rose above its start by more than 1 %
+    bool eventCap = false;        ///< a step hit the exact method's impact cap (maxEventsPerStep)
+    bool nonFinite = false;       ///< a NaN or infinity appeared
+    double deepestOverlap = 0.0;  ///< the largest overlap seen, as a fraction of the radius
+    double energyGain = 0.0;      ///< the largest rise of the energy over its start, relative
+    bool misdirected = false;     ///< a bounce left more than 0.5 degrees off the exact reflection
     double directionError = -1.0; ///< that bounce's direction error, degrees (capBounceProbe; -1: not measured)
 
     /// True when anything above went wrong.

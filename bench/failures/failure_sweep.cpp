@@ -44,23 +44,46 @@ std::optional<std::pair<double, Outcome>> Cell::firstFailure() const {
 
 std::vector<Axis> failureAxes() {
     return {
-        {"speed x dt / r", "a 0.05 m ball at a thin static line, no gravity, C = 1, 1000 start phases",
-         {0.5, 1, 1.5, 1.9, 1.99, 2.01, 2.1, 3, 10, 100, 1000, 10000}, speed},
-        {"stack height", "a column of touching balls (r = 0.1 m, C = 0) on a floor, 2 s", {1, 2, 4, 8, 16, 32, 64, 128, 256}, stack},
-        {"step rate, Hz", "a column of 16 touching balls (r = 0.1 m, C = 0) on a floor, 2 s, at dt = 1 / rate",
-         {960, 480, 240, 120, 60, 30, 15}, stepRate},
-        {"mass ratio", "a heavy ball on a 1 kg ball on a floor (r = 0.1 m, C = 0), 2 s",
-         {1, 3, 10, 30, 100, 1000, 1e4, 1e5, 1e6}, mass},
-        {"bounciness C", "4 balls (r = 0.1 m) dropped in a column with 0.1 m gaps onto a floor, 3 s",
-         {0, 0.25, 0.5, 0.75, 0.9, 0.95, 1}, bounce},
-        {"incline, degrees", "a frictionless ball (r = 0.25 m) at rest on a tilted line, 10 s: *sinks* here means it froze or "
-         "slid off x = g sin(theta) t^2 / 2 by more than 1 %", {0.01, 0.05, 0.12, 0.5, 1, 5, 15, 30, 45, 60}, incline},
-        {"V half-angle, degrees", "a ball (r = 0.25 m, C = 0.3) dropped 0.1 m into a V of two lines, 5 s: *sinks* here means it "
-         "did not come to rest touching both (1e-9 m, 1e-9 m/s)", {5, 10, 15, 20, 30, 45, 60, 70, 75, 80}, vee},
-        {"impact speed, m/s", "a ball (r = 0.25 m, C = 1, no gravity) striking a line's cap at half its radius off centre: "
-         "fails when it leaves more than 0.5 degrees off the exact reflection", {0.1, 0.5, 1, 2, 5, 10, 20, 50, 100}, impact},
-        {"stack on a floor", "a column of touching balls (r = 0.2 m, C = 0) on a floor, 5 s: only the bottom ball crossing "
-         "the floor counts", {1, 2, 4, 6, 8, 10, 12, 16, 24, 32}, floorStack},
+        {"speed x dt / r",
+         "a 0.05 m ball at a thin static line, no gravity, C = 1, 1000 start phases",
+         {0.5, 1, 1.5, 1.9, 1.99, 2.01, 2.1, 3, 10, 100, 1000, 10000},
+         speed},
+        {"stack height",
+         "a column of touching balls (r = 0.1 m, C = 0) on a floor, 2 s",
+         {1, 2, 4, 8, 16, 32, 64, 128, 256},
+         stack},
+        {"step rate, Hz",
+         "a column of 16 touching balls (r = 0.1 m, C = 0) on a floor, 2 s, at dt = 1 / rate",
+         {960, 480, 240, 120, 60, 30, 15},
+         stepRate},
+        {"mass ratio",
+         "a heavy ball on a 1 kg ball on a floor (r = 0.1 m, C = 0), 2 s",
+         {1, 3, 10, 30, 100, 1000, 1e4, 1e5, 1e6},
+         mass},
+        {"bounciness C",
+         "4 balls (r = 0.1 m) dropped in a column with 0.1 m gaps onto a floor, 3 s",
+         {0, 0.25, 0.5, 0.75, 0.9, 0.95, 1},
+         bounce},
+        {"incline, degrees",
+         "a frictionless ball (r = 0.25 m) at rest on a tilted line, 10 s: *sinks* here means it froze or "
+         "slid off x = g sin(theta) t^2 / 2 by more than 1 %",
+         {0.01, 0.05, 0.12, 0.5, 1, 5, 15, 30, 45, 60},
+         incline},
+        {"V half-angle, degrees",
+         "a ball (r = 0.25 m, C = 0.3) dropped 0.1 m into a V of two lines, 5 s: *sinks* here means it "
+         "did not come to rest touching both (1e-9 m, 1e-9 m/s)",
+         {5, 10, 15, 20, 30, 45, 60, 70, 75, 80},
+         vee},
+        {"impact speed, m/s",
+         "a ball (r = 0.25 m, C = 1, no gravity) striking a line's cap at half its radius off centre: "
+         "fails when it leaves more than 0.5 degrees off the exact reflection",
+         {0.1, 0.5, 1, 2, 5, 10, 20, 50, 100},
+         impact},
+        {"stack on a floor",
+         "a column of touching balls (r = 0.2 m, C = 0) on a floor, 5 s: only the bottom ball crossing "
+         "the floor counts",
+         {1, 2, 4, 6, 8, 10, 12, 16, 24, 32},
+         floorStack},
     };
 }
 
@@ -105,7 +128,8 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
     }
     out << "\n## Every value tried\n\n"
         << "`ok`, or the failures; in brackets the deepest overlap (fraction of r) and the largest energy gain\n"
-        << "(relative) seen, up to the first failing step, where a run stops (over every start phase that held, for speed).\n";
+        << "(relative) seen, up to the first failing step, where a run stops (over every start phase that held, for "
+           "speed).\n";
     for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
         out << "\n### " << sweep.axes[a].name << "\n\n| method |";
         for (const double v : sweep.axes[a].values) out << ' ' << number(v) << " |";
@@ -118,8 +142,7 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
                 char detail[64];
                 if (outcome.directionError >= 0.0)
                     std::snprintf(detail, sizeof detail, " (%.2g deg)", outcome.directionError);
-                else
-                    std::snprintf(detail, sizeof detail, " (%.2g, %.2g)", outcome.deepestOverlap, outcome.energyGain);
+                else std::snprintf(detail, sizeof detail, " (%.2g, %.2g)", outcome.deepestOverlap, outcome.energyGain);
                 out << ' ' << (outcome.failed() ? outcome.describe() : "ok") << detail << " |";
             }
             out << '\n';

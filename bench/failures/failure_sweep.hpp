@@ -13,9 +13,9 @@ namespace bench::failures {
 
 /// One axis of the sweep: what is varied, over which values (easiest first), and its probe.
 struct Axis {
-    std::string name;            ///< the column heading, e.g. "speed x dt / r"
-    std::string scene;           ///< what the probe sets up, for the table's notes
-    std::vector<double> values;  ///< in the order tried: the first failing one is reported
+    std::string name;           ///< the column heading, e.g. "speed x dt / r"
+    std::string scene;          ///< what the probe sets up, for the table's notes
+    std::vector<double> values; ///< in the order tried: the first failing one is reported
     Outcome (*probe)(rube::Method, double value, bool quick);
 };
 

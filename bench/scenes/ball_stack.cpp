@@ -46,7 +46,8 @@ private:
         [](Sim& sim, const SceneSize&) {
             sim.addLine(kFloor[0]);
             // Centres one diameter apart: each ball just touches the one below.
-            for (int i = 0; i < kBalls; ++i) sim.addBall({.position = start(i), .radius = kRadius, .mass = 1.0, .bounciness = 0.0});
+            for (int i = 0; i < kBalls; ++i)
+                sim.addBall({.position = start(i), .radius = kRadius, .mass = 1.0, .bounciness = 0.0});
         },
     .probe = [](const SceneSize&, double) { return std::make_unique<BallStackProbe>(); },
 });

@@ -26,7 +26,8 @@ std::vector<Lane> lanes(const SceneSize& size) {
     std::vector<Lane> all;
     for (const double speed : kSpeeds) {
         if (size.quick && (speed == 50.0 || speed == 5000.0)) continue;
-        for (const bool moving : {false, true}) all.push_back({speed, moving, kLaneSpacing * static_cast<double>(all.size())});
+        for (const bool moving : {false, true})
+            all.push_back({speed, moving, kLaneSpacing * static_cast<double>(all.size())});
     }
     return all;
 }
@@ -68,9 +69,14 @@ private:
     .build =
         [](Sim& sim, const SceneSize& size) {
             for (const Lane& lane : lanes(size)) {
-                sim.addLine({.a = {0, lane.y - 1}, .b = {0, lane.y + 1}, .velocity = {lane.moving ? -kTargetSpeed : 0.0, 0.0}});
-                sim.addBall({.position = {kStartX, lane.y}, .velocity = {lane.speed, 0}, .radius = kRadius, .mass = 0.01,
-                             .bounciness = 1.0, .fast = true});
+                sim.addLine(
+                    {.a = {0, lane.y - 1}, .b = {0, lane.y + 1}, .velocity = {lane.moving ? -kTargetSpeed : 0.0, 0.0}});
+                sim.addBall({.position = {kStartX, lane.y},
+                             .velocity = {lane.speed, 0},
+                             .radius = kRadius,
+                             .mass = 0.01,
+                             .bounciness = 1.0,
+                             .fast = true});
             }
         },
     .probe = [](const SceneSize& size, double) { return std::make_unique<BulletProbe>(size); },

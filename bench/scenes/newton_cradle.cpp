@@ -65,10 +65,14 @@ private:
         [](Sim& sim, const SceneSize&) {
             // The first ball starts kGap short of touching the row; the row's centres are one
             // diameter apart, so each touches the next.
-            sim.addBall({.position = {-2.0 * kRadius - kGap, 0}, .velocity = {kSpeed, 0}, .radius = kRadius,
-                         .mass = kMass, .bounciness = 1.0});
+            sim.addBall({.position = {-2.0 * kRadius - kGap, 0},
+                         .velocity = {kSpeed, 0},
+                         .radius = kRadius,
+                         .mass = kMass,
+                         .bounciness = 1.0});
             for (int i = 1; i < kBalls; ++i)
-                sim.addBall({.position = {2.0 * kRadius * (i - 1), 0}, .radius = kRadius, .mass = kMass, .bounciness = 1.0});
+                sim.addBall(
+                    {.position = {2.0 * kRadius * (i - 1), 0}, .radius = kRadius, .mass = kMass, .bounciness = 1.0});
         },
     .probe = [](const SceneSize&, double) { return std::make_unique<CradleProbe>(); },
 });

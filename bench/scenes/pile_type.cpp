@@ -52,7 +52,10 @@ void buildPile(Sim& sim, const PileLayout& layout) {
         const int row = i / layout.columns, column = i % layout.columns;
         const double shift = row % 2 == 1 ? 0.06 : 0.0; // so the columns do not fall straight onto each other
         sim.addBall({.position = {first + column * kSpacing + shift, 0.5 + row * kSpacing},
-                     .radius = kPileRadius, .mass = 0.1, .bounciness = 0.3, .friction = 0.4});
+                     .radius = kPileRadius,
+                     .mass = 0.1,
+                     .bounciness = 0.3,
+                     .friction = 0.4});
     }
 }
 

@@ -13,7 +13,7 @@ namespace bench {
 namespace {
 
 constexpr double kRadius = 0.0286;
-constexpr double kSampleRate = 30.0;   // every rate of the sweep (30..240 Hz) lands on these times
+constexpr double kSampleRate = 30.0; // every rate of the sweep (30..240 Hz) lands on these times
 constexpr double kReferenceRate = 3840.0;
 
 double duration(const SceneSize& size) { return size.quick ? 0.5 : 2.0; }
@@ -101,7 +101,8 @@ private:
     .boundsMin = {-1, -1},
     .boundsMax = {3.54, 2.27},
     .build = build,
-    .probe = [](const SceneSize& size, double timeStep) { return std::make_unique<PoolBreakProbe>(reference(size), timeStep); },
+    .probe = [](const SceneSize& size,
+                double timeStep) { return std::make_unique<PoolBreakProbe>(reference(size), timeStep); },
 });
 
 } // namespace

@@ -17,7 +17,8 @@ namespace {
 
 constexpr double kGravity = 9.81;
 constexpr double kRadius = 0.5;
-constexpr double kFriction = 0.8; // the pair's 0.64 (rube, Chipmunk) or 0.8 (Box2D) is far above tan(20 deg) / 3 = 0.12: no slip
+constexpr double kFriction =
+    0.8; // the pair's 0.64 (rube, Chipmunk) or 0.8 (Box2D) is far above tan(20 deg) / 3 = 0.12: no slip
 const double kTheta = 20.0 * std::numbers::pi / 180.0;
 const Vec2 kDown{std::cos(kTheta), -std::sin(kTheta)}; // along the slope, downhill to the right
 const Vec2 kNormal{std::sin(kTheta), std::cos(kTheta)};

@@ -27,7 +27,8 @@ b2Vec2 toB2(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)};
 
 class Box2dSim final : public Sim {
 public:
-    explicit Box2dSim(const WorldSpec& spec) : world_(toB2(spec.gravity)), timeStep_(static_cast<float>(spec.timeStep)) {
+    explicit Box2dSim(const WorldSpec& spec)
+        : world_(toB2(spec.gravity)), timeStep_(static_cast<float>(spec.timeStep)) {
         world_.SetContactListener(&listener_);
     }
 
@@ -72,7 +73,9 @@ public:
     int ballCount() const override { return static_cast<int>(balls_.size()); }
     BallState ball(int i) const override {
         const b2Body* b = balls_[static_cast<std::size_t>(i)];
-        return {{b->GetPosition().x, b->GetPosition().y}, {b->GetLinearVelocity().x, b->GetLinearVelocity().y}, b->GetAngularVelocity()};
+        return {{b->GetPosition().x, b->GetPosition().y},
+                {b->GetLinearVelocity().x, b->GetLinearVelocity().y},
+                b->GetAngularVelocity()};
     }
 
 private:

@@ -45,14 +45,16 @@ std::string drawChart(std::span<const Row> rows, const std::vector<std::string>&
     gp << "set terminal pngcairo size " << std::max<std::size_t>(1500, 480 * columns) << ",950 font ',10'\n"
        << "set output " << quoted(png) << "\n"
        << "set multiplot layout 2," << columns
-       << " title 'rube: error against cost (rube methods over dt = 1/30 .. 1/240 s, auto drawn thick; peers at 1/60 s)'\n"
+       << " title 'rube: error against cost (rube methods over dt = 1/30 .. 1/240 s, auto drawn thick; peers at 1/60 "
+          "s)'\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top right font ',8'\n"
        << "set xlabel 'ms of CPU per simulated second'\n";
 
     // One colour per engine in every panel: its place among the engines as they first appear.
     std::vector<std::string> engineOrder;
     for (const Row& r : rows)
-        if (std::find(engineOrder.begin(), engineOrder.end(), r.engine) == engineOrder.end()) engineOrder.push_back(r.engine);
+        if (std::find(engineOrder.begin(), engineOrder.end(), r.engine) == engineOrder.end())
+            engineOrder.push_back(r.engine);
     const auto colour = [&](const std::string& engine) {
         return std::to_string(1 + (std::find(engineOrder.begin(), engineOrder.end(), engine) - engineOrder.begin()));
     };
@@ -72,15 +74,20 @@ std::string drawChart(std::span<const Row> rows, const std::vector<std::string>&
            << "set title '" << scene << (logAxis ? " (an error of 0 is drawn at 1e-13)" : "") << "'\n";
         std::string plot;
         for (auto& [key, list] : series) {
-            std::sort(list.begin(), list.end(), [](const Row* a, const Row* b) { return a->msPerSimSecond < b->msPerSimSecond; });
+            std::sort(list.begin(), list.end(),
+                      [](const Row* a, const Row* b) { return a->msPerSimSecond < b->msPerSimSecond; });
             const std::filesystem::path data = workDir / (scene + "." + key.second + ".dat");
             std::ofstream out(data);
             for (const Row* r : list)
-                out << r->msPerSimSecond << ' ' << (logAxis ? std::max(chartError(*r), kErrorFloor) : chartError(*r)) << '\n';
+                out << r->msPerSimSecond << ' ' << (logAxis ? std::max(chartError(*r), kErrorFloor) : chartError(*r))
+                    << '\n';
             if (!plot.empty()) plot += ", ";
             // auto is drawn thick: the chart shows where it lies against the other methods.
             const bool isAuto = key.second == "rube-auto";
-            plot += quoted(data) + " using 1:2 with " + (key.first ? "points pointsize 2" : isAuto ? "linespoints linewidth 3" : "linespoints") +
+            plot += quoted(data) + " using 1:2 with " +
+                    (key.first ? "points pointsize 2"
+                     : isAuto  ? "linespoints linewidth 3"
+                               : "linespoints") +
                     " linetype " + colour(key.second) + " title '" + key.second + "'";
         }
         gp << (plot.empty() ? "plot 1/0 notitle" : "plot " + plot) << "\n";

@@ -82,7 +82,8 @@ private:
 };
 
 [[maybe_unused]] const bool registered = registerEngine(
-    {"chipmunk-7.0.3", EngineKind::peer, 11, [](const WorldSpec& spec) { return std::make_unique<ChipmunkSim>(spec); }});
+    {"chipmunk-7.0.3", EngineKind::peer, 11,
+     [](const WorldSpec& spec) { return std::make_unique<ChipmunkSim>(spec); }});
 
 } // namespace
 } // namespace bench

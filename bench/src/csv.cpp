@@ -33,9 +33,9 @@ void writeCsv(std::ostream& out, std::span<const Row> rows) {
             << r.bodies << ',' << r.steps << ',' << r.repeats << ',' << (timed ? number(r.msPerStep) : "") << ','
             << (timed ? number(r.usPerBodyStep) : "") << ',' << (timed ? number(r.msPerSimSecond) : "") << ','
             << number(r.metrics.error) << ',' << r.errorName << ',' << number(r.metrics.error2) << ',' << r.error2Name
-            << ',' << number(r.metrics.overlap) << ',' << (r.metrics.tunnels >= 0 ? std::to_string(r.metrics.tunnels) : "")
-            << ',' << r.escapes << ',' << r.capsHit << ',' << (r.nonFinite ? 1 : 0) << ',' << (r.timeout ? 1 : 0) << ','
-            << number(r.metrics.momentum) << '\n';
+            << ',' << number(r.metrics.overlap) << ','
+            << (r.metrics.tunnels >= 0 ? std::to_string(r.metrics.tunnels) : "") << ',' << r.escapes << ',' << r.capsHit
+            << ',' << (r.nonFinite ? 1 : 0) << ',' << (r.timeout ? 1 : 0) << ',' << number(r.metrics.momentum) << '\n';
     }
 }
 

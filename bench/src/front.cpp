@@ -58,8 +58,8 @@ void writeAutoTable(std::ostream& out, const std::vector<AutoVerdict>& verdicts)
     out << "| scene | dt | auto ms per simulated s | auto error | beaten by (cheaper by > "
         << static_cast<int>(kCostMargin * 100) << " % and more accurate) |\n|---|---|---|---|---|\n";
     for (const AutoVerdict& v : verdicts)
-        out << "| " << v.scene << " | " << stepName(v.timeStep) << " | " << v.msPerSimSecond << " | " << v.error << " | "
-            << (v.beatenBy.empty() ? "none: on the front" : v.beatenBy) << " |\n";
+        out << "| " << v.scene << " | " << stepName(v.timeStep) << " | " << v.msPerSimSecond << " | " << v.error
+            << " | " << (v.beatenBy.empty() ? "none: on the front" : v.beatenBy) << " |\n";
 }
 
 } // namespace bench

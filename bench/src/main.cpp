@@ -102,21 +102,32 @@ int main(int argc, char** argv) {
     bool rubeNoSleep = false, chipmunkSleep = false;
     app.add_flag("--quick", quick, "tiny scenes, one repeat, two time steps: checks the bench runs, not its speed");
     app.add_flag("--list", list, "list the scenes and engines and exit");
-    app.add_option("--csv", csvPath, "results file (default: bench/results/<date>-<host>.csv, --scaling: <date>-<host>-scaling.csv; --quick: ./bench-quick.csv)");
-    app.add_option("--chart", chartPath, "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none; \"\": none)");
-    app.add_option("--scaling-chart", scalingChartPath, "scaling chart PNG (default: screenshots/scaling.png; --quick: none; \"\": none)");
+    app.add_option("--csv", csvPath,
+                   "results file (default: bench/results/<date>-<host>.csv, --scaling: <date>-<host>-scaling.csv; "
+                   "--quick: ./bench-quick.csv)");
+    app.add_option("--chart", chartPath,
+                   "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none; \"\": none)");
+    app.add_option("--scaling-chart", scalingChartPath,
+                   "scaling chart PNG (default: screenshots/scaling.png; --quick: none; \"\": none)");
     app.add_flag("--no-scaling", noScaling, "leave out the scaling sweep (pile-scaling-*)");
-    app.add_flag("--scaling", scalingOnly, "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
+    app.add_flag("--scaling", scalingOnly,
+                 "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
     app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
-    app.add_option("--failures-md", failuresPath, "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
-    app.add_option("--front-md", frontPath, "where auto stands against the other methods and peers, per scene and step (default: bench/results/auto-front.md; --quick: ./auto-front-quick.md; \"\": none)");
+    app.add_option("--failures-md", failuresPath,
+                   "failure table (default: bench/results/failures.md; --quick: ./failures-quick.md)");
+    app.add_option("--front-md", frontPath,
+                   "where auto stands against the other methods and peers, per scene and step (default: "
+                   "bench/results/auto-front.md; --quick: ./auto-front-quick.md; \"\": none)");
     app.add_option("--scene", sceneFilter, "run only these scenes (repeatable)");
     app.add_option("--engine", engineFilter, "run only these engines, e.g. rube-solver, box2d-2.4.1 (repeatable)");
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
-    app.add_option("--repeats", repeats, "most timed repeats per configuration; the median is kept")->check(CLI::Range(1, 100));
+    app.add_option("--repeats", repeats, "most timed repeats per configuration; the median is kept")
+        ->check(CLI::Range(1, 100));
     app.add_option("--run-limit", runTimeLimit, "seconds before one run is abandoned and flagged as a timeout");
-    app.add_flag("--rube-no-sleep", rubeNoSleep, "rube's methods without sleeping islands (sleep_speed 0): what a pile costs while it never rests");
-    app.add_flag("--chipmunk-sleep", chipmunkSleep, "Chipmunk with sleeping on (0.5 s idle; Chipmunk's default is off, Box2D's on)");
+    app.add_flag("--rube-no-sleep", rubeNoSleep,
+                 "rube's methods without sleeping islands (sleep_speed 0): what a pile costs while it never rests");
+    app.add_flag("--chipmunk-sleep", chipmunkSleep,
+                 "Chipmunk with sleeping on (0.5 s idle; Chipmunk's default is off, Box2D's on)");
     CLI11_PARSE(app, argc, argv);
 
     auto& engines = bench::engines();
@@ -132,15 +143,21 @@ int main(int argc, char** argv) {
     }
 
     const std::filesystem::path source = RUBE_SOURCE_DIR;
-    if (failuresPath.empty()) failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
+    if (failuresPath.empty())
+        failuresPath = quick ? "failures-quick.md" : (source / "bench/results/failures.md").string();
     // Defaults only for what was not asked for: an explicit "" writes no file.
     const auto given = [&app](const char* option) { return app.count(option) > 0; };
-    if (frontPath.empty() && !given("--front-md")) frontPath = quick ? "auto-front-quick.md" : (source / "bench/results/auto-front.md").string();
+    if (frontPath.empty() && !given("--front-md"))
+        frontPath = quick ? "auto-front-quick.md" : (source / "bench/results/auto-front.md").string();
     if (failuresOnly) return writeFailures(failuresPath, quick) ? 0 : 1;
     if (rates.empty()) rates = quick ? std::vector<int>{30, 60} : std::vector<int>{30, 60, 120, 240};
-    if (csvPath.empty()) csvPath = quick ? "bench-quick.csv" : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
-    if (chartPath.empty() && !quick && !given("--chart")) chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
-    if (scalingChartPath.empty() && !quick && !given("--scaling-chart")) scalingChartPath = (source / "screenshots/scaling.png").string();
+    if (csvPath.empty())
+        csvPath = quick ? "bench-quick.csv"
+                        : (source / "bench/results" / resultsName(scalingOnly ? "-scaling" : "")).string();
+    if (chartPath.empty() && !quick && !given("--chart"))
+        chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
+    if (scalingChartPath.empty() && !quick && !given("--scaling-chart"))
+        scalingChartPath = (source / "screenshots/scaling.png").string();
 
     bench::RunOptions options;
     options.size.quick = quick;
@@ -164,19 +181,22 @@ int main(int argc, char** argv) {
         for (const auto& engine : engines) {
             if (!scaling || !runsInScaling(engine)) continue;
             sceneEngines.push_back(engine);
-            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep) sceneEngines.push_back(awakeVariant(engine));
+            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep)
+                sceneEngines.push_back(awakeVariant(engine));
         }
         for (const auto& engine : scaling ? sceneEngines : engines) {
             if (!selected(engineFilter, engine.name)) continue;
-            if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly && scene.scalingBodies > kFullRunPeerScalingBodies) {
+            if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly &&
+                scene.scalingBodies > kFullRunPeerScalingBodies) {
                 std::fprintf(stderr, "%-18s %-16s left out of the full run (cost): rube_bench --scaling runs it\n",
                              scene.name.c_str(), engine.name.c_str());
                 continue;
             }
             // Peers run at the 60 Hz step their users run them at: one point each on the chart; the
             // scaling sweep runs everything at 60 Hz, since it measures cost against N, not dt.
-            const std::vector<int> engineRates =
-                engine.kind == bench::EngineKind::peer || scaling ? std::vector<int>{60} : rates;
+            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer || scaling
+                                                     ? std::vector<int>{60}
+                                                     : rates;
             // Coarse steps first: once a step times out, every finer one would too (more steps for
             // the same simulated time, and no method's work per simulated second falls as dt shrinks
             // in these scenes), so it is flagged as a timeout without spending the run limit again.
@@ -196,7 +216,8 @@ int main(int argc, char** argv) {
                 const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
                 if (row.timeout) timedOut = row;
                 std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
-                             engine.name.c_str(), rate, row.msPerStep, row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
+                             engine.name.c_str(), rate, row.msPerStep,
+                             row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
                              row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                 rows.push_back(row);
             }
@@ -218,22 +239,25 @@ int main(int argc, char** argv) {
     if (!verdicts.empty() && !frontPath.empty()) {
         std::ofstream front = openResultFile(frontPath);
         bench::writeAutoTable(front, verdicts);
-        const auto beaten = std::count_if(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.beatenBy.empty(); });
-        std::cerr << "rube_bench: auto is on the front at " << verdicts.size() - static_cast<std::size_t>(beaten) << " of "
-                  << verdicts.size() << " scene steps; wrote " << frontPath << '\n';
+        const auto beaten = std::count_if(verdicts.begin(), verdicts.end(),
+                                          [](const auto& v) { return !v.beatenBy.empty(); });
+        std::cerr << "rube_bench: auto is on the front at " << verdicts.size() - static_cast<std::size_t>(beaten)
+                  << " of " << verdicts.size() << " scene steps; wrote " << frontPath << '\n';
     }
 
     if (!chartPath.empty() && !sceneOrder.empty()) {
-        const std::string why = bench::drawChart(rows, sceneOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", chartPath);
+        const std::string why = bench::drawChart(
+            rows, sceneOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", chartPath);
         std::cerr << "rube_bench: " << (why.empty() ? "drew " + chartPath : why) << '\n';
     }
     if (!scalingChartPath.empty() && !scalingOrder.empty()) {
-        const std::string why = bench::drawScalingChart(rows, scalingOrder, std::filesystem::temp_directory_path() / "rube-bench-chart",
-                                                        scalingChartPath);
+        const std::string why = bench::drawScalingChart(
+            rows, scalingOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", scalingChartPath);
         std::cerr << "rube_bench: " << (why.empty() ? "drew " + scalingChartPath : why) << '\n';
     }
     // The failure table is part of every full run (it takes about a second) unless scenes were picked.
     if (sceneFilter.empty() && engineFilter.empty() && !scalingOnly && !writeFailures(failuresPath, quick)) return 1;
-    std::cerr << "rube_bench: done in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+    std::cerr << "rube_bench: done in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
     return 0;
 }

@@ -48,7 +48,6 @@ void measure(const Scene& scene, const Engine& engine, double timeStep, const Ru
     }
     row.metrics = probe->finish(*sim);
     row.capsHit = sim->capsHit();
-
 }
 
 // One timed run: building the world is outside the clock, the step loop is all that is inside it.

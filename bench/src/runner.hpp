@@ -10,13 +10,13 @@ namespace bench {
 /// How hard to try: repeats of the timed run and a wall-clock guard per run.
 struct RunOptions {
     SceneSize size;
-    int minRepeats = 3;          ///< timed runs always made, unless one run is slower than slowRun
-    int maxRepeats = 5;          ///< the timed run is repeated up to this many times; the median is kept
-    double repeatBudget = 3.0;   ///< seconds: no repeats past minRepeats once the runs would take this long
-    double slowRun = 4.0;        ///< seconds: a run this slow is timed once (a slow method must not eat the budget)
-    double runTimeLimit = 8.0;   ///< seconds: a measurement run past this is abandoned (flagged "timeout")
-    bool rubeSleep = true;       ///< see WorldSpec
-    bool chipmunkSleep = false;  ///< see WorldSpec
+    int minRepeats = 3;         ///< timed runs always made, unless one run is slower than slowRun
+    int maxRepeats = 5;         ///< the timed run is repeated up to this many times; the median is kept
+    double repeatBudget = 3.0;  ///< seconds: no repeats past minRepeats once the runs would take this long
+    double slowRun = 4.0;       ///< seconds: a run this slow is timed once (a slow method must not eat the budget)
+    double runTimeLimit = 8.0;  ///< seconds: a measurement run past this is abandoned (flagged "timeout")
+    bool rubeSleep = true;      ///< see WorldSpec
+    bool chipmunkSleep = false; ///< see WorldSpec
 };
 
 /// One CSV row: what one scene cost and how wrong it was on one engine at one time step.

@@ -23,7 +23,8 @@ std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::s
     std::map<std::pair<int, std::string>, std::vector<const Row*>> series;
     std::map<std::string, double> cheapest; // per rube series
     for (const Row& r : rows) {
-        if (r.timeout || std::find(scalingScenes.begin(), scalingScenes.end(), r.scene) == scalingScenes.end()) continue;
+        if (r.timeout || std::find(scalingScenes.begin(), scalingScenes.end(), r.scene) == scalingScenes.end())
+            continue;
         series[{r.peer ? 1 : 0, r.engine}].push_back(&r);
         if (r.peer) continue;
         auto [it, fresh] = cheapest.try_emplace(r.engine, r.usPerBodyStep);
@@ -36,7 +37,8 @@ std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::s
     gp << "set terminal pngcairo size 1000,650 font ',11'\n"
        << "set output " << gnuplotQuoted(png) << "\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top left\n"
-       << "set title 'The pile widened to N balls (the same 50 rows, a box N/1000 times as wide), 600 steps at 60 Hz: cost per body-step'\n"
+       << "set title 'The pile widened to N balls (the same 50 rows, a box N/1000 times as wide), 600 steps at 60 Hz: "
+          "cost per body-step'\n"
        << "set xlabel 'bodies (log)'\nset ylabel 'microseconds per body-step (median)'\nset yrange [0:*]\n"
        << "set xrange [70:28000]\n";
     std::string plot;
@@ -52,7 +54,8 @@ std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::s
     }
     if (target != cheapest.end())
         plot += std::string(plot.empty() ? "" : ", ") + std::to_string(1.5 * target->second) +
-                " with lines dashtype 2 linecolor 'grey40' title '1.5 x the cheapest " + target->first + " point (the issue target)'";
+                " with lines dashtype 2 linecolor 'grey40' title '1.5 x the cheapest " + target->first +
+                " point (the issue target)'";
     gp << (plot.empty() ? "plot 1/0 notitle" : "plot " + plot) << "\n";
     gp.close();
     const std::string command = "gnuplot " + gnuplotQuoted(script);

@@ -14,11 +14,12 @@ namespace bench {
 
 /// What a scene's probe reports after the measurement run; NaN means "not measured here".
 struct Metrics {
-    double error = std::numeric_limits<double>::quiet_NaN();  ///< the scene's headline error
-    double error2 = std::numeric_limits<double>::quiet_NaN(); ///< its second error, if it has one
+    double error = std::numeric_limits<double>::quiet_NaN();   ///< the scene's headline error
+    double error2 = std::numeric_limits<double>::quiet_NaN();  ///< its second error, if it has one
     double overlap = std::numeric_limits<double>::quiet_NaN(); ///< largest overlap measured, m
     int tunnels = -1;                                          ///< balls that passed through a line
-    double momentum = std::numeric_limits<double>::quiet_NaN(); ///< relative momentum error, where a scene keeps momentum
+    double momentum =
+        std::numeric_limits<double>::quiet_NaN(); ///< relative momentum error, where a scene keeps momentum
 };
 
 /// Watches one measurement run: called after every step, never inside the timed loop.
@@ -39,15 +40,16 @@ struct SceneSize {
 /// A bench scene. `build` adds the same bodies to any Sim, so rube and the peers run one scene.
 struct Scene {
     std::string name;
-    std::string errorName;          ///< what `error` measures and its unit, for the CSV and chart
-    std::string error2Name;         ///< what `error2` measures, or empty
-    bool logError = true;           ///< chart the error on a log axis (false for counts)
+    std::string errorName;  ///< what `error` measures and its unit, for the CSV and chart
+    std::string error2Name; ///< what `error2` measures, or empty
+    bool logError = true;   ///< chart the error on a log axis (false for counts)
     Vec2 gravity{0.0, -9.81};
-    std::function<double(const SceneSize&)> duration; ///< simulated seconds
+    std::function<double(const SceneSize&)> duration;      ///< simulated seconds
     rube::Vec2 boundsMin{-1e6, -1e6}, boundsMax{1e6, 1e6}; ///< a ball whose centre leaves them escaped
     std::function<void(Sim&, const SceneSize&)> build;
     std::function<std::unique_ptr<Probe>(const SceneSize&, double timeStep)> probe;
-    int scalingBodies = 0; ///< > 0: a point of the scaling sweep with this many bodies (rube's solver and the peers at 60 Hz, its own chart)
+    int scalingBodies = 0; ///< > 0: a point of the scaling sweep with this many bodies (rube's solver and the peers at
+                           ///< 60 Hz, its own chart)
 };
 
 /// Every scene compiled in, in registration order (sorted by name when listed).

@@ -22,7 +22,7 @@ struct BallSpec {
     double mass = 1.0;
     double bounciness = 1.0; ///< C; a pair's C is the product of both (rube's and Chipmunk's rule)
     double friction = 0.0;
-    bool fast = false;       ///< ask the engine for continuous detection (Box2D's bullet flag)
+    bool fast = false; ///< ask the engine for continuous detection (Box2D's bullet flag)
 };
 
 /// A static line, or a kinematic one when `velocity` is non-zero; two-sided, `radius` thick.
@@ -32,15 +32,15 @@ struct LineSpec {
     double radius = 0.0;
     double bounciness = 1.0; ///< 1 leaves the ball's own C under the product rule
     double friction = 0.0;
-    Vec2 velocity{};         ///< constant velocity of a kinematic line, m/s
+    Vec2 velocity{}; ///< constant velocity of a kinematic line, m/s
 };
 
 /// The world settings every engine is given.
 struct WorldSpec {
     Vec2 gravity{0.0, -9.81};
     double timeStep = 1.0 / 60;
-    bool rubeSleep = true;       ///< rube's sleeping islands, on by default as in a level (--rube-no-sleep: off)
-    bool chipmunkSleep = false;  ///< Chipmunk's sleeping, off by default in Chipmunk (--chipmunk-sleep: 0.5 s)
+    bool rubeSleep = true;      ///< rube's sleeping islands, on by default as in a level (--rube-no-sleep: off)
+    bool chipmunkSleep = false; ///< Chipmunk's sleeping, off by default in Chipmunk (--chipmunk-sleep: 0.5 s)
 };
 
 /// A ball's state as read back after a step (outside the timed loop).
@@ -73,9 +73,9 @@ enum class EngineKind : std::uint8_t { rubeMethod, peer };
 
 /// An engine the bench can run: a name for the CSV and a factory.
 struct Engine {
-    std::string name;    ///< "rube-solver", "box2d-2.4.1", "chipmunk-7.0.3", ...
+    std::string name; ///< "rube-solver", "box2d-2.4.1", "chipmunk-7.0.3", ...
     EngineKind kind = EngineKind::rubeMethod;
-    int order = 0;       ///< position in the output (rube's methods first, then the peers)
+    int order = 0; ///< position in the output (rube's methods first, then the peers)
     std::function<std::unique_ptr<Sim>(const WorldSpec&)> make;
 };
 

@@ -43,7 +43,8 @@ bool checkScript(const CheckOptions& options, const std::string& file, std::ostr
     const std::optional<std::filesystem::path> beside = levelBeside(file);
     if (options.level.empty() && (!beside || !std::filesystem::exists(*beside))) {
         err << file << ": a script is checked against its level, and "
-            << (beside ? beside->string() + " does not exist" : std::string("it is not named NAME.solution.toml beside NAME.toml"))
+            << (beside ? beside->string() + " does not exist"
+                       : std::string("it is not named NAME.solution.toml beside NAME.toml"))
             << ": name the level with --level LEVEL\n";
         return false;
     }
@@ -73,14 +74,15 @@ bool checkScene(const CheckOptions& options, const std::string& file, const std:
     }
     const std::filesystem::path solution = solutionBeside(file);
     const bool hasSolution = solution != std::filesystem::path(file) && std::filesystem::exists(solution);
-    const std::vector<SceneError> warnings =
-        lintLevel(*load.scene, file, text, hasSolution ? std::optional<std::filesystem::path>(solution) : std::nullopt);
+    const std::vector<SceneError> warnings = lintLevel(
+        *load.scene, file, text, hasSolution ? std::optional<std::filesystem::path>(solution) : std::nullopt);
     for (SceneError warning : warnings) {
         warning.message = (options.strict ? "error (--strict): " : "warning: ") + warning.message;
         err << warning.format() << '\n';
     }
     if (warnings.empty()) out << file << ": ok\n";
-    else if (!options.strict) out << file << ": ok, " << warnings.size() << " warning" << (warnings.size() == 1 ? "" : "s") << '\n';
+    else if (!options.strict)
+        out << file << ": ok, " << warnings.size() << " warning" << (warnings.size() == 1 ? "" : "s") << '\n';
     return warnings.empty() || !options.strict;
 }
 
@@ -106,7 +108,8 @@ ExitCode checkFiles(const CheckOptions& options, std::ostream& out, std::ostream
             ok = false;
             continue;
         }
-        const bool good = looksLikeScript(file, *text) ? checkScript(options, file, out, err) : checkScene(options, file, *text, out, err);
+        const bool good = looksLikeScript(file, *text) ? checkScript(options, file, out, err)
+                                                       : checkScene(options, file, *text, out, err);
         ok = ok && good;
     }
     return ok ? ExitCode::ok : ExitCode::badInput;

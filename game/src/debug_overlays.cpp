@@ -9,9 +9,7 @@ namespace rube::game {
 
 namespace {
 
-render::Point toPoint(Vec2 v) {
-    return {static_cast<float>(v.x), static_cast<float>(v.y)};
-}
+render::Point toPoint(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
 // Sizes of an impact marker, in pixels: big enough to see on a 640x360 frame, small enough not
 // to hide a pool ball (about 12 px across in a 1280x720 frame) it sits on.
@@ -58,7 +56,8 @@ void Trails::record(const World& world) {
         const int slot = slotOfCircle_[static_cast<std::size_t>(impact.circle)];
         if (slot < 0) continue;
         const double radius = circles[static_cast<std::size_t>(impact.circle)].radius;
-        const Vec2 centre{impact.pointOfImpact.x + impact.normal.x * radius, impact.pointOfImpact.y + impact.normal.y * radius};
+        const Vec2 centre{impact.pointOfImpact.x + impact.normal.x * radius,
+                          impact.pointOfImpact.y + impact.normal.y * radius};
         const std::deque<Sample>& trail = samples_[static_cast<std::size_t>(slot)];
         if (!trail.empty() && impact.time < trail.back().time) continue; // a solver contact reported out of order
         add(static_cast<std::size_t>(slot), centre, impact.time);
@@ -92,8 +91,7 @@ void RecentImpacts::record(const World& world) {
         impacts_.push_back({nextSequence_++, impact});
     }
     // Impacts arrive in time order, so the old ones are all at the front.
-    while (!impacts_.empty() &&
-           (impacts_.size() > maxKept_ || world.time() - impacts_.front().impact.time > linger_)) {
+    while (!impacts_.empty() && (impacts_.size() > maxKept_ || world.time() - impacts_.front().impact.time > linger_)) {
         const auto it = newest_.find(pairKey(impacts_.front().impact));
         if (it != newest_.end() && it->second == impacts_.front().sequence) newest_.erase(it);
         impacts_.pop_front();

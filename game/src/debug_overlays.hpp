@@ -38,9 +38,9 @@ private:
 
     double seconds_;
     std::size_t maxPoints_;
-    std::vector<int> slotOfCircle_;             // circle index -> tracked slot, or -1
-    std::vector<int> circleOfSlot_;             // tracked slot -> circle index
-    std::vector<std::deque<Sample>> samples_;   // per tracked slot, oldest first
+    std::vector<int> slotOfCircle_;              // circle index -> tracked slot, or -1
+    std::vector<int> circleOfSlot_;              // tracked slot -> circle index
+    std::vector<std::deque<Sample>> samples_;    // per tracked slot, oldest first
     mutable std::vector<render::Point> scratch_; // one body's points, for the draw list
 };
 
@@ -69,7 +69,7 @@ private:
     double linger_;
     std::size_t maxKept_;
     std::uint64_t nextSequence_ = 0;
-    std::deque<Kept> impacts_;                               // oldest first
+    std::deque<Kept> impacts_;                                // oldest first
     std::unordered_map<std::uint64_t, std::uint64_t> newest_; // pair of bodies -> its newest impact's sequence
 };
 

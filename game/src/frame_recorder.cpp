@@ -103,7 +103,8 @@ FrameRecorder::FrameRecorder(const RecordingTarget& target) : start_(std::chrono
         checkVideoPath(target.video);
         // A level's script may set an odd size after the command line was checked.
         const auto format = render::videoFormatOf(target.video);
-        if (!format) throw OutputFolderError("cannot write " + target.video.string() + ": a video ends in .mp4, .webm or .gif");
+        if (!format)
+            throw OutputFolderError("cannot write " + target.video.string() + ": a video ends in .mp4, .webm or .gif");
         if (const std::string why = render::videoSizeProblem(*format, target.size); !why.empty())
             throw OutputFolderError("cannot write " + target.video.string() + ": " + why);
         if (render::findFfmpeg().empty()) throw FfmpegMissing(std::string(render::kFfmpegMissing));

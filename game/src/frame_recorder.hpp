@@ -50,12 +50,12 @@ struct RecordingTarget {
 
 /// What a recording produced, for the run summary.
 struct RecordingStats {
-    std::int64_t frames = 0;   ///< PNG files written
-    std::int64_t bytes = 0;    ///< their total size
+    std::int64_t frames = 0;      ///< PNG files written
+    std::int64_t bytes = 0;       ///< their total size
     std::int64_t videoFrames = 0; ///< frames in the video (0 without one, or when it was abandoned)
     std::int64_t videoBytes = 0;  ///< the video's size
     std::string gl;               ///< the offscreen back end that drew: "egl" or "osmesa"
-    double wallSeconds = 0.0;  ///< from the recorder's creation to the last file on disk
+    double wallSeconds = 0.0;     ///< from the recorder's creation to the last file on disk
     /// Frames per second, end to end; 0 before anything was written.
     double framesPerSecond() const { return wallSeconds > 0.0 ? static_cast<double>(frames) / wallSeconds : 0.0; }
     /// Mean PNG size, bytes.

@@ -19,7 +19,7 @@ constexpr int kSlotHeight = 64;
 constexpr int kSlotGap = 8;
 constexpr int kMargin = 8;
 constexpr int kTextScale = 2;
-constexpr int kModeLineY = kMargin + kSlotHeight + 6;  // pixels below the bar's top edge
+constexpr int kModeLineY = kMargin + kSlotHeight + 6; // pixels below the bar's top edge
 constexpr int kMessageLineY = kModeLineY + 16;
 
 Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
@@ -65,27 +65,29 @@ std::optional<ItemKind> InventoryBar::slotAt(Point pixel) const {
     const float top = static_cast<float>(levelFrame_.height + kMargin);
     if (pixel.y < top || pixel.y > top + kSlotHeight) return std::nullopt;
     for (const Slot& slot : slots_)
-        if (pixel.x >= static_cast<float>(slot.left) && pixel.x <= static_cast<float>(slot.left + kSlotWidth)) return slot.kind;
+        if (pixel.x >= static_cast<float>(slot.left) && pixel.x <= static_cast<float>(slot.left + kSlotWidth))
+            return slot.kind;
     return std::nullopt;
 }
 
 std::optional<Point> InventoryBar::slotCentre(ItemKind kind) const {
     for (const Slot& slot : slots_)
         if (slot.kind == kind)
-            return Point{static_cast<float>(slot.left) + 0.5f * kSlotWidth, static_cast<float>(levelFrame_.height + kMargin) + 0.5f * kSlotHeight};
+            return Point{static_cast<float>(slot.left) + 0.5f * kSlotWidth,
+                         static_cast<float>(levelFrame_.height + kMargin) + 0.5f * kSlotHeight};
     return std::nullopt;
 }
 
-void InventoryBar::draw(render::DrawList& list, const std::function<int(ItemKind)>& remaining, std::string_view modeLine,
-                        std::string_view message, render::Color messageColor) const {
+void InventoryBar::draw(render::DrawList& list, const std::function<int(ItemKind)>& remaining,
+                        std::string_view modeLine, std::string_view message, render::Color messageColor) const {
     const Palette& palette = Palette::greybox();
     const render::FrameSize window = windowSize();
     const float ppm = windowCamera_.pixelsPerMetre(window);
     // The bar's panel covers whatever of the level would spill below the level area.
     const Point low = worldOf(0.0f, static_cast<float>(window.height));
     const Point high = worldOf(static_cast<float>(window.width), static_cast<float>(levelFrame_.height));
-    list.box({0.5f * (low.x + high.x), 0.5f * (low.y + high.y)}, {0.5f * (high.x - low.x), 0.5f * (high.y - low.y)}, 0.0f,
-             look("box", "box_outline", 2.0f));
+    list.box({0.5f * (low.x + high.x), 0.5f * (low.y + high.y)}, {0.5f * (high.x - low.x), 0.5f * (high.y - low.y)},
+             0.0f, look("box", "box_outline", 2.0f));
     const float top = static_cast<float>(levelFrame_.height + kMargin);
     for (const Slot& slot : slots_) {
         const int left = remaining(slot.kind);

@@ -22,12 +22,12 @@ namespace rube::game {
 
 namespace {
 
-constexpr float kMarginMetres = 0.5f;  // room around the extent: some kinds draw a little past it (a fan's housing)
-constexpr double kMinWidth = 1.6;      // m: a peg is not blown up to fill the picture
-constexpr double kMinHeight = 1.2;     // m
-constexpr int kLabelMargin = 8;        // pixels
+constexpr float kMarginMetres = 0.5f; // room around the extent: some kinds draw a little past it (a fan's housing)
+constexpr double kMinWidth = 1.6;     // m: a peg is not blown up to fill the picture
+constexpr double kMinHeight = 1.2;    // m
+constexpr int kLabelMargin = 8;       // pixels
 constexpr int kLabelScale = 2;
-constexpr float kIconPixels = 36.0f;   // the inventory icon's size, pixels
+constexpr float kIconPixels = 36.0f; // the inventory icon's size, pixels
 
 render::Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
@@ -72,7 +72,8 @@ void drawKind(ItemKind kind, const render::Camera& camera, render::FrameSize siz
     kind->drawIcon({corner.x, corner.y}, kIconPixels / ppm, true, list);
     list.text(kLabelMargin, kLabelMargin, scene.name, palette["hud_text"], kLabelScale);
     // A 1 m bar in the bottom left corner: each picture is framed to its part, so this gives the scale.
-    const render::Point left = camera.toWorld({static_cast<float>(kLabelMargin), static_cast<float>(kLabelMargin)}, size);
+    const render::Point left = camera.toWorld({static_cast<float>(kLabelMargin), static_cast<float>(kLabelMargin)},
+                                              size);
     list.capsule(left, {left.x + 1.0f, left.y}, 1.5f / ppm, {palette["hud_text"], render::Color::transparent(), 0.0f});
     list.text(kLabelMargin, size.height - kLabelMargin - 7 * kLabelScale - 8, "1 m", palette["hud_text"], kLabelScale);
 }
@@ -102,8 +103,7 @@ ExitCode writeSheet(const ItemsOptions& options, std::ostream& out, std::ostream
             if (options.progress)
                 err << "\rrube items: picture " << i + 1 << " of " << kinds.size() << " (" << kinds[i]->name()
                     << ")\033[K" << std::flush;
-            const render::Camera camera =
-                render::Camera::fitting(framing(kinds[i]), options.size, kMarginMetres);
+            const render::Camera camera = render::Camera::fitting(framing(kinds[i]), options.size, kMarginMetres);
             drawKind(kinds[i], camera, options.size, list);
             renderer.draw(list, camera);
             render::Image picture = writer->spareImage();

@@ -13,9 +13,9 @@ namespace rube::game {
 
 /// What `rube items` was asked for.
 struct ItemsOptions {
-    std::string sheet;                     ///< folder for the pictures; empty: print the catalogue
-    render::FrameSize size{320, 240};      ///< each picture's size, pixels
-    bool progress = false;                 ///< show a progress line on `err` (when it is a terminal)
+    std::string sheet;                ///< folder for the pictures; empty: print the catalogue
+    render::FrameSize size{320, 240}; ///< each picture's size, pixels
+    bool progress = false;            ///< show a progress line on `err` (when it is a terminal)
 };
 
 /// Prints the catalogue to `out`, or writes the sheet into options.sheet: one PNG per kind,

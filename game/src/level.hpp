@@ -1,6 +1,6 @@
 #pragma once
-/// Level: what a level file adds to a scene — items (each of a kind, see part_kind.hpp), the inventory, placement zones and
-/// the goal. One format, one parser: a physics scene is a level without any of these.
+/// Level: what a level file adds to a scene — items (each of a kind, see part_kind.hpp), the inventory, placement zones
+/// and the goal. One format, one parser: a physics scene is a level without any of these.
 
 #include "part_kind.hpp"
 #include "scene_errors.hpp"
@@ -26,18 +26,18 @@ enum class GoalKind : std::uint8_t { targetHit, ballInBucket, allTargets };
 
 /// The goal: its text for the HUD, the condition and an optional time limit.
 struct Goal {
-    std::string text;              ///< what the player is told
+    std::string text; ///< what the player is told
     GoalKind kind = GoalKind::targetHit;
-    std::string item;              ///< the target (targetHit) or bucket (ballInBucket)
+    std::string item;                ///< the target (targetHit) or bucket (ballInBucket)
     std::optional<double> timeLimit; ///< seconds; the goal counts only when reached by then
 };
 
 /// Everything a level adds to a scene.
 struct LevelDesc {
-    std::vector<ItemDesc> items;                 ///< fixed parts, in file order
+    std::vector<ItemDesc> items;                       ///< fixed parts, in file order
     std::map<std::string, int, std::less<>> inventory; ///< placeable kind name -> how many
-    std::vector<Zone> zones;                     ///< where placements may go
-    std::optional<Goal> goal;                    ///< absent for plain physics scenes
+    std::vector<Zone> zones;                           ///< where placements may go
+    std::optional<Goal> goal;                          ///< absent for plain physics scenes
     /// True when the file used any level feature, so `rube run` plays it as a level.
     bool isLevel() const { return goal.has_value() || !items.empty() || !inventory.empty() || !zones.empty(); }
     /// The index of the item called `name`, or -1.

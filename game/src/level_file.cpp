@@ -30,7 +30,8 @@ std::optional<ItemKind> readKind(const toml::table& table, Diagnostics& diag) {
     const toml::node* node = table.get("kind");
     const auto names = kindNames();
     if (!node) {
-        diag.error(placeOf(table.source()), "missing required key 'kind' in [[item]] (one of " + joinNames(names) + ")");
+        diag.error(placeOf(table.source()),
+                   "missing required key 'kind' in [[item]] (one of " + joinNames(names) + ")");
         return std::nullopt;
     }
     const auto* text = node->as_string();
@@ -40,7 +41,8 @@ std::optional<ItemKind> readKind(const toml::table& table, Diagnostics& diag) {
     }
     if (const ItemKind kind = findPartKind(text->get())) return kind;
     std::string message = "kind must be one of " + joinNames(names) + ", got '" + text->get() + "'";
-    if (const auto match = closestMatch(text->get(), names)) message += " (did you mean '" + std::string(*match) + "'?)";
+    if (const auto match = closestMatch(text->get(), names))
+        message += " (did you mean '" + std::string(*match) + "'?)";
     diag.error(placeOf(node->source()), std::move(message));
     return std::nullopt;
 }
@@ -48,7 +50,8 @@ std::optional<ItemKind> readKind(const toml::table& table, Diagnostics& diag) {
 void readItem(const toml::table& table, SceneReading& reading) {
     const auto kind = readKind(table, reading.diag);
     if (!kind) return;
-    TableReader reader(table, "in [[item]] of kind '" + std::string((*kind)->name()) + "'", keysOf(*kind), reading.diag);
+    TableReader reader(table, "in [[item]] of kind '" + std::string((*kind)->name()) + "'", keysOf(*kind),
+                       reading.diag);
     // What goals and scripts point at needs a name: the kind says whether it is one.
     const std::string name = readBodyName(reader, reading, (*kind)->needsName() ? Need::required : Need::optional);
     const auto position = reader.vec2("position", NumberRange::coordinate(), Need::required);
@@ -67,7 +70,8 @@ void readInventory(TableReader& root, SceneReading& reading) {
         if (kind->placeable()) placeable.push_back(kind->name());
     TableReader inventory(*table, "in [inventory] (placeable kinds)", placeable, reading.diag);
     for (std::string_view kind : placeable)
-        if (const auto n = inventory.integer(kind, 0, 1000)) reading.scene.level.inventory[std::string(kind)] = static_cast<int>(*n);
+        if (const auto n = inventory.integer(kind, 0, 1000))
+            reading.scene.level.inventory[std::string(kind)] = static_cast<int>(*n);
 }
 
 void readZones(TableReader& root, SceneReading& reading) {
@@ -78,7 +82,8 @@ void readZones(TableReader& root, SceneReading& reading) {
         if (!min || !max) continue;
         if (!(min->x < max->x && min->y < max->y)) {
             zone.error(zone.valuePlace("max"), "zone max must be greater than min in both x and y, got min " +
-                                                   formatPair(min->x, min->y) + " and max " + formatPair(max->x, max->y));
+                                                   formatPair(min->x, min->y) + " and max " +
+                                                   formatPair(max->x, max->y));
             continue;
         }
         reading.scene.level.zones.push_back({Aabb{*min, *max}, zone.tablePlace()});
@@ -88,7 +93,8 @@ void readZones(TableReader& root, SceneReading& reading) {
 // A name must refer to an item of the right kind; the message lists the ones that would do.
 void checkReference(Diagnostics& diag, SourcePlace place, std::string_view key, const std::string& name, PartRole role,
                     const LevelDesc& level) {
-    if (std::string message = itemReferenceError(level, key, name, role); !message.empty()) diag.error(place, std::move(message));
+    if (std::string message = itemReferenceError(level, key, name, role); !message.empty())
+        diag.error(place, std::move(message));
 }
 
 void readGoal(TableReader& root, SceneReading& reading) {
@@ -114,7 +120,9 @@ void readGoal(TableReader& root, SceneReading& reading) {
     } else if (condition) {
         bool any = false;
         for (const ItemDesc& item : level.items) any = any || item.kind->plays(PartRole::goalTarget);
-        if (!any) goal.error(goal.valuePlace("condition"), "condition 'all-targets' needs at least one [[item]] of kind 'target'");
+        if (!any)
+            goal.error(goal.valuePlace("condition"),
+                       "condition 'all-targets' needs at least one [[item]] of kind 'target'");
     }
     reading.scene.level.goal = result;
 }
@@ -129,8 +137,8 @@ std::string readBodyName(TableReader& table, SceneReading& reading, Need need) {
         return "";
     }
     if (const auto it = reading.names.find(*name); it != reading.names.end()) {
-        table.error(table.valuePlace("name"), "the name '" + *name + "' is already used at line " +
-                                                  std::to_string(it->second.line));
+        table.error(table.valuePlace("name"),
+                    "the name '" + *name + "' is already used at line " + std::to_string(it->second.line));
         return "";
     }
     reading.names[*name] = table.valuePlace("name");

@@ -15,10 +15,13 @@ namespace rube::game {
 namespace {
 
 bool inside(const Aabb& outer, const Aabb& inner) {
-    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
+    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x &&
+           inner.max.y <= outer.max.y;
 }
 
-std::string boxWords(const Aabb& box) { return formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y); }
+std::string boxWords(const Aabb& box) {
+    return formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y);
+}
 
 std::string itemWords(const ItemDesc& item) {
     std::string words(itemKindName(item.kind));
@@ -37,16 +40,17 @@ void lintZones(const SceneDesc& level, Diagnostics& warn, SourcePlace inventoryP
     const LevelDesc& l = level.level;
     for (const Zone& zone : l.zones) {
         if (level.view && !inside(*level.view, zone.box))
-            warn.error(zone.place, "zone " + boxWords(zone.box) + " is not wholly inside the [view] " + boxWords(*level.view) +
-                                       ": the player cannot see all of it");
+            warn.error(zone.place, "zone " + boxWords(zone.box) + " is not wholly inside the [view] " +
+                                       boxWords(*level.view) + ": the player cannot see all of it");
         if (!inside(level.world.bounds, zone.box))
             warn.error(zone.place, "zone " + boxWords(zone.box) + " is not wholly inside the world's bounds " +
                                        boxWords(level.world.bounds) + ": what is placed there escapes");
     }
-    const int pieces = std::accumulate(l.inventory.begin(), l.inventory.end(), 0, [](int n, const auto& kv) { return n + kv.second; });
+    const int pieces = std::accumulate(l.inventory.begin(), l.inventory.end(), 0,
+                                       [](int n, const auto& kv) { return n + kv.second; });
     if (pieces > 0 && l.zones.empty())
-        warn.error(inventoryPlace, "the inventory gives " + std::to_string(pieces) + " item" + (pieces == 1 ? "" : "s") +
-                                       " but the level has no [[zone]] to place them in");
+        warn.error(inventoryPlace, "the inventory gives " + std::to_string(pieces) + " item" +
+                                       (pieces == 1 ? "" : "s") + " but the level has no [[zone]] to place them in");
     if (pieces == 0 && !l.zones.empty())
         warn.error(l.zones.front().place, "the level has placement zones but no [inventory] to place from");
 }
@@ -66,7 +70,8 @@ std::optional<std::int64_t> headlessGoalStep(const SceneDesc& level, const Scrip
     const std::int64_t steps = script.steps.value_or(runSteps(level));
     std::size_t next = 0;
     for (std::int64_t i = 0; i < steps && !run.goalFrame(); ++i) {
-        for (; next < script.actions.size() && script.actions[next].frame == i; ++next) (void)takeAction(script.actions[next], run);
+        for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
+            (void)takeAction(script.actions[next], run);
         run.step();
     }
     return run.goalFrame();
@@ -96,7 +101,8 @@ std::vector<SceneError> lintLevel(const SceneDesc& level, const std::string& fil
         if (!load.script)
             for (const SceneError& e : load.errors) warn.error({1, 1}, "its solution does not read: " + e.format());
         else if (level.level.goal && !headlessGoalStep(level, *load.script))
-            warn.error(tablePlace(document, "goal"), "its solution " + solution->filename().string() + " does not reach the goal");
+            warn.error(tablePlace(document, "goal"),
+                       "its solution " + solution->filename().string() + " does not reach the goal");
     }
     return warn.sorted();
 }

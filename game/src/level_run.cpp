@@ -100,7 +100,8 @@ void LevelRun::aim(int cannon, double angle) { states_[static_cast<std::size_t>(
 std::string LevelRun::aimAtPoint(int cannon, Vec2 point, bool highArc) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
     const GravityShot shot = aimGravityShot(item.position, point, item.kind->muzzleSpeed(item), world_.def().gravity);
-    if (!shot.reachable()) return "cannon '" + item.name + "' cannot reach " + formatPair(point.x, point.y) + ": " + shot.reason;
+    if (!shot.reachable())
+        return "cannon '" + item.name + "' cannot reach " + formatPair(point.x, point.y) + ": " + shot.reason;
     // At exactly the minimum speed there is one arc, reported as the low one.
     const Arc& arc = highArc && shot.highArc ? *shot.highArc : *shot.lowArc;
     aim(cannon, arc.shot.angle);
@@ -134,7 +135,8 @@ void LevelRun::fire(int cannon) {
 std::string LevelRun::fireWhen(int cannon, int target) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
     ItemState& state = states_[static_cast<std::size_t>(cannon)];
-    const ShotTiming timing = timeFixedAngleShot(item.position, Vec2::fromAngle(state.aim), item.kind->muzzleSpeed(item), itemPosition(target),
+    const ShotTiming timing = timeFixedAngleShot(item.position, Vec2::fromAngle(state.aim),
+                                                 item.kind->muzzleSpeed(item), itemPosition(target),
                                                  itemVelocity(target), world_.def().gravity);
     if (!timing.possible)
         return "cannon '" + item.name + "' cannot time a shot at '" + items_[static_cast<std::size_t>(target)].name +
@@ -167,7 +169,8 @@ void LevelRun::step() {
         if (impact.otherKind == Other::circle) struck = impact.other;
         else if (impact.otherKind == Other::body && impact.circle >= 0) struck = impact.circle;
         if (struck < 0) continue;
-        if (const int item = itemOf(world_.circleId(struck)); item >= 0) struckItems.emplace_back(item, impact.pointOfImpact);
+        if (const int item = itemOf(world_.circleId(struck)); item >= 0)
+            struckItems.emplace_back(item, impact.pointOfImpact);
     }
     for (const auto& [item, point] : struckItems) items_[static_cast<std::size_t>(item)].kind->hit(*this, item, point);
     for (std::size_t i = 0; i < items_.size(); ++i) {
@@ -206,7 +209,8 @@ void LevelRun::checkGoal() {
         break;
     case GoalKind::ballInBucket: {
         const int bucket = find(goal->item);
-        bucketRestSteps_ = bucket >= 0 && ballRestsIn(items_[static_cast<std::size_t>(bucket)]) ? bucketRestSteps_ + 1 : 0;
+        bucketRestSteps_ = bucket >= 0 && ballRestsIn(items_[static_cast<std::size_t>(bucket)]) ? bucketRestSteps_ + 1
+                                                                                                : 0;
         reached = static_cast<double>(bucketRestSteps_) * world_.def().timeStep >= kRestSeconds;
         break;
     }

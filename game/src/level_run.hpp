@@ -30,13 +30,13 @@ struct GameEvent {
 
 /// Which of the World's bodies is an item's, and what has happened to it.
 struct ItemState {
-    CircleId circle;            ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
-    double aim = 0.0;           ///< cannons: the barrel's angle now, radians
-    bool hit = false;           ///< targets and switches: touched by a ball
-    bool fired = false;         ///< cannons: have shot
-    std::optional<double> timedShot; ///< cannons: a shot fireWhen() timed, waiting for this world time, s
+    CircleId circle;    ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
+    double aim = 0.0;   ///< cannons: the barrel's angle now, radians
+    bool hit = false;   ///< targets and switches: touched by a ball
+    bool fired = false; ///< cannons: have shot
+    std::optional<double> timedShot;   ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
-    int field = -1;             ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
+    int field = -1; ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
 };
 
 /// A level in play. Placements must have passed checkPlacements().
@@ -113,10 +113,10 @@ private:
     World world_;
     std::vector<ItemDesc> items_;
     std::vector<ItemState> states_;
-    std::vector<RopeId> ropes_;         // the scene's [[rope]] i (SceneDesc::ropes) -> its rope in the World
+    std::vector<RopeId> ropes_; // the scene's [[rope]] i (SceneDesc::ropes) -> its rope in the World
     std::vector<GameEvent> events_;
     std::optional<std::int64_t> goalFrame_;
-    std::int64_t bucketRestSteps_ = 0;  // consecutive steps a ball has rested in the goal's bucket
+    std::int64_t bucketRestSteps_ = 0; // consecutive steps a ball has rested in the goal's bucket
 };
 
 } // namespace rube::game

@@ -158,7 +158,8 @@ std::optional<rube::render::FrameSize> parseFrameSize(const std::string& text) {
 
 std::string frameSizeError(const std::string& text) {
     if (parseFrameSize(text)) return {};
-    return "expected WxH in pixels, each from 1 to " + std::to_string(rube::game::kMaxFrameSide) + ", got '" + text + "'";
+    return "expected WxH in pixels, each from 1 to " + std::to_string(rube::game::kMaxFrameSide) + ", got '" + text +
+           "'";
 }
 
 std::string videoFileError(const std::string& text) {
@@ -207,20 +208,26 @@ RunCommand::RunCommand(CLI::App& app) {
         "run", "Simulate a scene and print a summary; optionally write PNG frames, a video and a CSV trace");
     command_->footer(kRunFooter);
     command_->add_option("scene", options_.scene, "The scene file (.toml) to simulate")->required()->type_name("SCENE");
-    command_->add_option("--script", options_.script, "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
+    command_
+        ->add_option("--script", options_.script,
+                     "Play a level with this script (levels/NAME.solution.toml): placements, actions, expectations")
         ->type_name("FILE");
-    command_->add_flag("--no-render", options_.noRender, "Run headless: no GL context and no frames (summary and --trace)");
+    command_->add_flag("--no-render", options_.noRender,
+                       "Run headless: no GL context and no frames (summary and --trace)");
     stepsOption_ = command_->add_option("--steps", steps_, "Number of time steps to simulate (0 or more)")
                        ->type_name("N")
                        ->check(CLI::Validator(stepCount, ""));
     command_->add_option("--trace", options_.trace, "Write every dynamic body's state at every step to this CSV file")
         ->type_name("FILE");
-    command_->add_option("--method", options_.method,
-                         "Time-step method, overriding the scene's: discrete, turn-based, exact, solver or auto")
+    command_
+        ->add_option("--method", options_.method,
+                     "Time-step method, overriding the scene's: discrete, turn-based, exact, solver or auto")
         ->type_name("NAME");
     // --out and the options that only mean something with it are checked after parsing, not
     // with CLI11's needs/excludes, which would print "Needs: --out" beside every one in --help.
-    outOption_ = command_->add_option("--out", options_.out, "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
+    outOption_ = command_
+                     ->add_option("--out", options_.out,
+                                  "Write PNG frames DIR/frame_00000.png, frame_00001.png, ... (created if missing)")
                      ->type_name("DIR");
     videoOption_ = command_
                        ->add_option("--video", options_.video,
@@ -230,7 +237,8 @@ RunCommand::RunCommand(CLI::App& app) {
     everyOption_ = command_->add_option("--every", options_.every, "Steps between frames (default 1: every step)")
                        ->type_name("K")
                        ->check(countFromOne("steps"));
-    framesOption_ = command_->add_option("--frames", frames_, "Frames to write, frame 0 included (default: steps / K + 1)")
+    framesOption_ = command_
+                        ->add_option("--frames", frames_, "Frames to write, frame 0 included (default: steps / K + 1)")
                         ->type_name("N")
                         ->check(countFromOne("frames"));
     sizeOption_ = command_->add_option("--size", size_, "Frame size in pixels, each side 1 to 8192 (default 1280x720)")
@@ -292,23 +300,34 @@ private:
 };
 
 PlayCommand::PlayCommand(CLI::App& app) {
-    command_ = app.add_subcommand("play", "Play a level in a window with the mouse and keys; optionally record it as a script");
+    command_ = app.add_subcommand("play",
+                                  "Play a level in a window with the mouse and keys; optionally record it as a script");
     command_->footer(kPlayFooter);
     command_->add_option("level", options_.level, "The level file (.toml) to play")->required()->type_name("LEVEL");
-    command_->add_option("--script", options_.script, "Start from this script: its placements and aims; its other actions play as the machine runs")->type_name("FILE");
-    command_->add_option("--record", options_.record, "When the session ends, write it as a script that 'rube run --script' replays")
+    command_
+        ->add_option("--script", options_.script,
+                     "Start from this script: its placements and aims; its other actions play as the machine runs")
+        ->type_name("FILE");
+    command_
+        ->add_option("--record", options_.record,
+                     "When the session ends, write it as a script that 'rube run --script' replays")
         ->type_name("FILE");
     sizeOption_ = command_->add_option("--size", size_, "Level area in pixels, as rube run's frames (default 1280x720)")
                       ->type_name("WxH")
                       ->check(CLI::Validator(frameSizeError, ""));
     command_->add_flag("--run", options_.runAtOnce, "Start the machine at once, as if Space were pressed");
-    quitAfterOption_ = command_->add_option("--quit-after", quitAfter_, "Close the window N frames after the machine starts")
+    quitAfterOption_ = command_
+                           ->add_option("--quit-after", quitAfter_,
+                                        "Close the window N frames after the machine starts")
                            ->type_name("N")
                            ->check(countFromOne("frames"));
-    command_->add_option("--steps-per-frame", options_.stepsPerFrame, "Take K steps per frame drawn instead of following real time")
+    command_
+        ->add_option("--steps-per-frame", options_.stepsPerFrame,
+                     "Take K steps per frame drawn instead of following real time")
         ->type_name("K")
         ->check(countFromOne("steps"));
-    command_->add_flag("--no-vsync", noVsync_, "Draw as fast as possible instead of at the display's refresh (for measuring)");
+    command_->add_flag("--no-vsync", noVsync_,
+                       "Draw as fast as possible instead of at the display's refresh (for measuring)");
 }
 
 ExitCode PlayCommand::run() {
@@ -331,12 +350,15 @@ private:
 };
 
 CheckCommand::CheckCommand(CLI::App& app) {
-    command_ = app.add_subcommand("check", "Validate scene, level and script files and lint levels; every error as file:line:col: message");
+    command_ = app.add_subcommand(
+        "check", "Validate scene, level and script files and lint levels; every error as file:line:col: message");
     command_->footer(kCheckFooter);
     command_->add_option("files", options_.files, "Scene, level and solution script files (.toml) to validate")
         ->required()
         ->type_name("FILE");
-    command_->add_option("--level", options_.level, "The level the scripts given are checked against (default: NAME.toml beside NAME.solution.toml)")
+    command_
+        ->add_option("--level", options_.level,
+                     "The level the scripts given are checked against (default: NAME.toml beside NAME.solution.toml)")
         ->type_name("LEVEL");
     command_->add_flag("--strict", options_.strict, "Treat warnings as errors (exit 2); CI checks levels/ with it");
 }
@@ -357,22 +379,26 @@ private:
 };
 
 ItemsCommand::ItemsCommand(CLI::App& app) {
-    command_ = app.add_subcommand("items", "List every part kind with its keys, defaults, units and meaning; or draw them");
+    command_ = app.add_subcommand("items",
+                                  "List every part kind with its keys, defaults, units and meaning; or draw them");
     command_->footer("The same catalogue, with pictures, is game/items.md. Every picture is one kind's default\n"
                      "  item drawn as 'rube run' draws levels, with its name, its inventory icon in the top right\n"
                      "  corner and a 1 m bar (each picture is framed to its part). A progress line is shown only\n"
                      "  when stderr is a terminal. Regenerate the committed pictures with\n"
                      "  rube items --sheet game/items.\n"
                      "Exit status: 0 done, 1 no GL context, 2 bad usage or a folder that cannot be written.");
-    sheetOption_ = command_->add_option("--sheet", options_.sheet, "Draw one labelled PNG per kind into DIR/<kind>.png (created if missing)")
+    sheetOption_ = command_
+                       ->add_option("--sheet", options_.sheet,
+                                    "Draw one labelled PNG per kind into DIR/<kind>.png (created if missing)")
                        ->type_name("DIR");
     sizeOption_ = command_->add_option("--size", size_, "Each picture's size in pixels (default 320x240)")
-        ->type_name("WxH")
-        ->check(CLI::Validator(frameSizeError, ""));
+                      ->type_name("WxH")
+                      ->check(CLI::Validator(frameSizeError, ""));
 }
 
 ExitCode ItemsCommand::run() {
-    if (*sheetOption_ && options_.sheet.empty()) return usageError("--sheet: expected a folder, got ''", "rube items --help");
+    if (*sheetOption_ && options_.sheet.empty())
+        return usageError("--sheet: expected a folder, got ''", "rube items --help");
     if (*sizeOption_ && !*sheetOption_) return usageError("--size requires --sheet", "rube items --help");
     options_.size = *parseFrameSize(size_); // the validator has accepted it, or it is the default
     options_.progress = ::isatty(STDERR_FILENO) == 1;
@@ -386,7 +412,8 @@ std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
     if (argc > 1 && argv[1][0] != '-') {
         const auto commands = std::as_const(app).get_subcommands([](const CLI::App*) { return true; });
         if (std::none_of(commands.begin(), commands.end(), [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
-            std::cerr << "rube: unknown command '" << argv[1] << "': the commands are run, play, check and items (see 'rube --help')\n";
+            std::cerr << "rube: unknown command '" << argv[1]
+                      << "': the commands are run, play, check and items (see 'rube --help')\n";
             return ExitCode::badInput;
         }
     }

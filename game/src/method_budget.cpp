@@ -18,7 +18,9 @@ std::string methodBudgetRefusal(const SceneDesc& scene, Method method) {
     const std::int64_t pairs = pairTestsPerSearch(scene);
     if (pairs <= kMaxPairTests) return "";
     return "method " + std::string(methodName(method)) + " tests every pair of shapes, and " +
-           std::to_string(pairs / std::max<std::int64_t>(1, static_cast<std::int64_t>(scene.circles.size() + scene.segments.size() + scene.bodies.size()))) +
+           std::to_string(pairs / std::max<std::int64_t>(1, static_cast<std::int64_t>(scene.circles.size() +
+                                                                                      scene.segments.size() +
+                                                                                      scene.bodies.size()))) +
            " moving bodies among " +
            std::to_string(scene.circles.size() + scene.segments.size() + scene.bodies.size()) + " shapes make " +
            std::to_string(pairs) + " pair tests " + (method == Method::discrete ? "a step" : "a search") +

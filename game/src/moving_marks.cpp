@@ -1,6 +1,7 @@
 // Marks that show what moves where the bodies alone would not: a conveyor's belt running along its
-// segment, water as a band over the pool, and the air pushing back on balls that fly through drag. Shared by the scene view and the level view, and a
-// function of the World alone (its time, never the wall clock), so every frame is reproducible.
+// segment, water as a band over the pool, and the air pushing back on balls that fly through drag. Shared by the scene
+// view and the level view, and a function of the World alone (its time, never the wall clock), so every frame is
+// reproducible.
 #include "scene_view.hpp"
 
 #include "rube/render/palette.hpp"
@@ -16,10 +17,11 @@ constexpr double kChevronSpacing = 0.5; // m between a belt's chevrons
 constexpr double kChevronMinHalf = 0.1; // m: a chevron's half-height on a thin belt (it is at least the belt's radius)
 constexpr float kChevronWidth = 2.0f;   // pixels
 constexpr float kWaterEdgeWidth = 2.0f; // pixels: the pool's outline, its top line the surface
-constexpr double kStreakPerG = 0.6;     // m of air streak per g of drag deceleration: a ball at its terminal speed trails 0.6 m
-constexpr double kStreakMax = 1.5;      // m: the longest streak, however fast the ball
+constexpr double kStreakPerG =
+    0.6; // m of air streak per g of drag deceleration: a ball at its terminal speed trails 0.6 m
+constexpr double kStreakMax = 1.5;        // m: the longest streak, however fast the ball
 constexpr double kStandardGravity = 9.81; // m/s^2: the streak's unit, so it reads the same in a world without gravity
-constexpr float kStreakWidth = 2.0f;    // pixels
+constexpr float kStreakWidth = 2.0f;      // pixels
 
 render::Point toPoint(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
@@ -67,7 +69,9 @@ void drawAirDrag(const World& world, render::DrawList& list) {
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double speed = c.velocity.length();
         // The drag's deceleration |F| / m = k_linear |v| + k_quadratic |v|^2 (fields.hpp), in g.
-        const double inG = (drag.linearRate(c.radius, c.inverseMass) + drag.quadraticRate(c.radius, c.inverseMass) * speed) * speed / kStandardGravity;
+        const double inG = (drag.linearRate(c.radius, c.inverseMass) +
+                            drag.quadraticRate(c.radius, c.inverseMass) * speed) *
+                           speed / kStandardGravity;
         const double length = std::min(kStreakPerG * inG, kStreakMax);
         if (length * 1e3 < c.radius) continue; // a ball at rest feels no air: no streak, nor a direction for one
         drawStreaks(c, length, color, list);
@@ -84,7 +88,8 @@ void drawWaters(const World& world, render::DrawList& list) {
     const render::Palette& palette = render::Palette::greybox();
     for (const Water& water : world.fields().waters) {
         const Vec2 centre = (water.min + water.max) * 0.5, half = (water.max - water.min) * 0.5;
-        list.box(toPoint(centre), toPoint(half), 0.0f, {palette["water"], palette["water"].withAlpha(0xc0), kWaterEdgeWidth});
+        list.box(toPoint(centre), toPoint(half), 0.0f,
+                 {palette["water"], palette["water"].withAlpha(0xc0), kWaterEdgeWidth});
     }
 }
 

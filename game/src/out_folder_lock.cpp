@@ -30,7 +30,8 @@ OutFolderLock::OutFolderLock(const std::filesystem::path& folder) {
     // The holder's pid, only for the refusal's message: the lock itself is the flock.
     const std::string pid = std::to_string(::getpid());
     // Best effort: a lock file that cannot hold the pid still locks; a refusal then says "pid unknown".
-    const bool pidWritten = ::ftruncate(fd, 0) == 0 && ::pwrite(fd, pid.data(), pid.size(), 0) == static_cast<ssize_t>(pid.size());
+    const bool pidWritten = ::ftruncate(fd, 0) == 0 &&
+                            ::pwrite(fd, pid.data(), pid.size(), 0) == static_cast<ssize_t>(pid.size());
     static_cast<void>(pidWritten);
     fd_ = fd;
 }

@@ -31,8 +31,9 @@ std::string traits(ItemKind kind) {
 
 // A circle of the default item: a dynamic one is a ball with a mass, a fixed one a round part.
 std::string circleText(const CircleDef& c) {
-    std::string out = c.motion == Motion::dynamic ? "a ball of radius " + number(c.radius) + " m, " + number(c.mass) + " kg"
-                                                  : "a fixed circle of radius " + number(c.radius) + " m";
+    std::string out = c.motion == Motion::dynamic
+                          ? "a ball of radius " + number(c.radius) + " m, " + number(c.mass) + " kg"
+                          : "a fixed circle of radius " + number(c.radius) + " m";
     out += ", bounciness " + number(c.material.bounciness);
     if (c.motion == Motion::dynamic && c.magnetic) out += ", magnetic";
     if (c.motion == Motion::dynamic && c.gravityScale != 1.0) out += ", gravity scale " + number(c.gravityScale);
@@ -50,7 +51,6 @@ std::string keyDefault(ItemKind kind, const PartKey& key) {
     const bool required = key.value == "required" || (key.key == kNameKey.key && kind->needsName());
     return required ? "required" : std::string(key.value);
 }
-
 
 } // namespace
 
@@ -111,10 +111,13 @@ std::string partCatalogueMarkdown(const std::string& pictureFolder) {
         "     tests/parts/items_catalogue_test.cpp checks it is current: after changing a kind, run\n"
         "     RUBE_WRITE_ITEMS_DOC=1 ./build/tests/level_tests \"[catalogue]\" and, for the pictures,\n"
         "     ./build/rube items --sheet game/items -->\n\n"
-        "Every kind of part a level or a script may use, in the order messages list them: what it is, what an item of it\n"
+        "Every kind of part a level or a script may use, in the order messages list them: what it is, what an item of "
+        "it\n"
         "is at its defaults (measured from the bodies the game makes for it), and its `[[item]]` keys. `rube items`\n"
-        "prints the same; `rube items --sheet DIR` draws the pictures. A part placed with the mouse in `rube play` takes\n"
-        "its position, and its angle when it turns; every other key keeps the default below. A script's `[[place]]` may\n"
+        "prints the same; `rube items --sheet DIR` draws the pictures. A part placed with the mouse in `rube play` "
+        "takes\n"
+        "its position, and its angle when it turns; every other key keeps the default below. A script's `[[place]]` "
+        "may\n"
         "also give the kind's own keys (a plank's `length`, a bomb's `trigger` and `fuse`). Keys and their syntax:\n"
         "[scene-format.md](scene-format.md).\n";
     for (ItemKind kind : allPartKinds()) {
@@ -132,7 +135,8 @@ std::string partCatalogueMarkdown(const std::string& pictureFolder) {
         out += "\n\nAs made: " + partDefaults(kind) + ".\n\n| key | default | meaning |\n|---|---|---|\n";
         for (const PartKey& key : kind->keys()) {
             if (key.key == kKindKey.key) continue;
-            out += "| `" + std::string(key.key) + "` | " + markdownCell(keyDefault(kind, key)) + " | " + markdownCell(key.doc) + " |\n";
+            out += "| `" + std::string(key.key) + "` | " + markdownCell(keyDefault(kind, key)) + " | " +
+                   markdownCell(key.doc) + " |\n";
         }
     }
     return out;

@@ -24,8 +24,9 @@ std::string partKindsMarkdown() {
         for (const PartKey& key : kind->keys()) {
             if (key.key == kKindKey.key) continue; // every item has it: it names the row above
             const bool required = key.value == "required" || (key.key == kNameKey.key && kind->needsName());
-            out += "| | `" + std::string(key.key) + "` | " + (required ? std::string("required") : markdownCell(key.value)) +
-                   " | " + markdownCell(key.doc) + " |\n";
+            out += "| | `" + std::string(key.key) + "` | " +
+                   (required ? std::string("required") : markdownCell(key.value)) + " | " + markdownCell(key.doc) +
+                   " |\n";
         }
     }
     return out;

@@ -27,7 +27,8 @@ std::vector<ItemKind> sortedKinds() {
     };
     for (std::size_t i = 0; i < kinds.size(); ++i)
         for (std::size_t j = i + 1; j < kinds.size(); ++j)
-            if (kinds[i]->order() == kinds[j]->order() || kinds[i]->name() == kinds[j]->name()) clash(kinds[i], kinds[j]);
+            if (kinds[i]->order() == kinds[j]->order() || kinds[i]->name() == kinds[j]->name())
+                clash(kinds[i], kinds[j]);
     return kinds;
 }
 
@@ -69,8 +70,7 @@ Aabb PartKind::extent(const ItemDesc& item) const {
     const ItemBodies shapes = room(item);
     std::optional<Aabb> box;
     const auto grow = [&](Vec2 lo, Vec2 hi) {
-        if (!box)
-            box = Aabb{lo, hi};
+        if (!box) box = Aabb{lo, hi};
         else
             box = Aabb{Vec2{std::min(box->min.x, lo.x), std::min(box->min.y, lo.y)},
                        Vec2{std::max(box->max.x, hi.x), std::max(box->max.y, hi.y)}};

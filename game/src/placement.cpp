@@ -32,9 +32,7 @@ double segmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
                      pointSegmentDistance(d, a, b)});
 }
 
-bool overlaps(const Capsule& p, const Capsule& q) {
-    return segmentDistance(p.a, p.b, q.a, q.b) < p.radius + q.radius;
-}
+bool overlaps(const Capsule& p, const Capsule& q) { return segmentDistance(p.a, p.b, q.a, q.b) < p.radius + q.radius; }
 
 void addBodies(const ItemBodies& bodies, const std::string& what, std::vector<Capsule>& out) {
     for (const CircleDef& c : bodies.circles) out.push_back({c.position, c.position, c.radius, what});
@@ -56,8 +54,9 @@ std::vector<Capsule> fixedParts(const SceneDesc& scene) {
                          "the fixed circle " + std::to_string(i)});
     for (std::size_t i = 0; i < scene.segments.size(); ++i)
         parts.push_back({scene.segments[i].a, scene.segments[i].b, scene.segments[i].radius,
-                         "the fixed segment " + std::to_string(i) + " (" + formatPair(scene.segments[i].a.x, scene.segments[i].a.y) +
-                             " to " + formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")"});
+                         "the fixed segment " + std::to_string(i) + " (" +
+                             formatPair(scene.segments[i].a.x, scene.segments[i].a.y) + " to " +
+                             formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")"});
     for (const ItemDesc& item : scene.level.items) addBodies(item.kind->room(item), itemWords(item), parts);
     return parts;
 }
@@ -71,7 +70,8 @@ std::string kindCount(ItemKind kind, int count) {
 }
 
 bool inside(const Aabb& outer, const Aabb& inner) {
-    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x && inner.max.y <= outer.max.y;
+    return inner.min.x >= outer.min.x && inner.min.y >= outer.min.y && inner.max.x <= outer.max.x &&
+           inner.max.y <= outer.max.y;
 }
 
 } // namespace
@@ -101,7 +101,8 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingItems(const SceneDes
     for (std::size_t i = 0; i < shapes.size(); ++i)
         for (std::size_t j = i + 1; j < shapes.size(); ++j)
             if (std::any_of(shapes[i].begin(), shapes[i].end(), [&](const Capsule& p) {
-                    return std::any_of(shapes[j].begin(), shapes[j].end(), [&](const Capsule& q) { return overlaps(p, q); });
+                    return std::any_of(shapes[j].begin(), shapes[j].end(),
+                                       [&](const Capsule& q) { return overlaps(p, q); });
                 }))
                 pairs.emplace_back(i, j);
     return pairs;
@@ -128,10 +129,10 @@ std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const st
         const bool inZone = std::any_of(scene.level.zones.begin(), scene.level.zones.end(),
                                         [&](const Zone& z) { return inside(z.box, extent); });
         if (!inZone) {
-            refuse(scene.level.zones.empty() ? std::string("is outside every placement zone (the level has none)")
-                                             : "is not wholly inside a placement zone (it spans " +
-                                                   formatPair(extent.min.x, extent.min.y) + " to " +
-                                                   formatPair(extent.max.x, extent.max.y) + ")");
+            refuse(scene.level.zones.empty()
+                       ? std::string("is outside every placement zone (the level has none)")
+                       : "is not wholly inside a placement zone (it spans " + formatPair(extent.min.x, extent.min.y) +
+                             " to " + formatPair(extent.max.x, extent.max.y) + ")");
             continue;
         }
         std::vector<Capsule> mine;

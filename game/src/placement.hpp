@@ -12,17 +12,18 @@ namespace rube::game {
 
 /// One item the player places from the inventory.
 struct Placement {
-    ItemKind kind = nullptr;         ///< must be in the level's inventory
-    Vec2 position;                   ///< centre
-    double angle = 0.0;              ///< radians; planks, ramps and fans turn
-    std::string name;                ///< optional, so scripts can refer to it later
-    SourcePlace place;               ///< where the script wrote it
-    double angleDegrees = 0.0;       ///< `angle` in degrees as the script wrote it, so a recorded
-                                     ///< session writes back exactly what it read
+    ItemKind kind = nullptr;            ///< must be in the level's inventory
+    Vec2 position;                      ///< centre
+    double angle = 0.0;                 ///< radians; planks, ramps and fans turn
+    std::string name;                   ///< optional, so scripts can refer to it later
+    SourcePlace place;                  ///< where the script wrote it
+    double angleDegrees = 0.0;          ///< `angle` in degrees as the script wrote it, so a recorded
+                                        ///< session writes back exactly what it read
     std::optional<PartParams> params{}; ///< the kind's own parameters a script gave (a plank's length,
-                                      ///< a bomb's trigger); none: the kind's defaults
-    std::vector<std::pair<std::string, std::string>> ownKeys{}; ///< those keys and their values as TOML
-                                      ///< text, in file order, so a script writes back what it read
+                                        ///< a bomb's trigger); none: the kind's defaults
+    std::vector<std::pair<std::string, std::string>>
+        ownKeys{}; ///< those keys and their values as TOML
+                   ///< text, in file order, so a script writes back what it read
 };
 
 /// A placement that was refused: which rule, and the words of the message.
@@ -44,7 +45,8 @@ std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const st
 /// physics pushes them apart on the first step and the level does not start as drawn.
 std::vector<std::pair<std::size_t, std::size_t>> overlappingItems(const SceneDesc& scene);
 
-/// The item a placement puts into the level: the kind's defaults, or the parameters the script gave, at the placement's pose.
+/// The item a placement puts into the level: the kind's defaults, or the parameters the script gave, at the placement's
+/// pose.
 ItemDesc placedItem(const Placement& placement);
 
 } // namespace rube::game

@@ -50,14 +50,15 @@ std::string jsonNumber(double value) {
 
 // The summary: every event with its frame, time and position, and how each expectation fared;
 // whether a signal cut the run short (`signal` empty when none did).
-std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::vector<std::pair<std::string, bool>>& expectations,
-                        const std::string& signal) {
+std::string summaryJson(const LevelRun& run, const SceneDesc& level,
+                        const std::vector<std::pair<std::string, bool>>& expectations, const std::string& signal) {
     std::ostringstream json;
     json << "{\n  \"level\": " << jsonString(level.name) << ",\n  \"steps\": " << run.frame()
          << ",\n  \"interrupted\": " << (signal.empty() ? "false" : "true,\n  \"signal\": " + jsonString(signal))
          << ",\n  \"goal_reached\": " << (run.goalFrame() ? "true" : "false")
          << ",\n  \"goal_frame\": " << (run.goalFrame() ? std::to_string(*run.goalFrame()) : "null")
-         << ",\n  \"speed_clamps\": " << run.world().stats().speedClamps << ",\n  \"isolated_bodies\": " << run.world().stats().isolatedBodies
+         << ",\n  \"speed_clamps\": " << run.world().stats().speedClamps
+         << ",\n  \"isolated_bodies\": " << run.world().stats().isolatedBodies
          << ",\n  \"non_finite\": " << (run.world().stats().nonFinite ? "true" : "false") << ",\n  \"events\": [";
     bool first = true;
     for (const GameEvent& e : run.events()) {
@@ -71,7 +72,8 @@ std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::
     json << (first ? "" : "\n  ") << "],\n  \"expectations\": [";
     first = true;
     for (const auto& [text, met] : expectations) {
-        json << (first ? "\n" : ",\n") << "    {\"expect\": " << jsonString(text) << ", \"met\": " << (met ? "true" : "false") << "}";
+        json << (first ? "\n" : ",\n") << "    {\"expect\": " << jsonString(text)
+             << ", \"met\": " << (met ? "true" : "false") << "}";
         first = false;
     }
     json << (first ? "" : "\n  ") << "]\n}\n";
@@ -80,7 +82,8 @@ std::string summaryJson(const LevelRun& run, const SceneDesc& level, const std::
 
 bool met(const Expectation& e, const LevelRun& run) {
     for (const GameEvent& event : run.events())
-        if (event.kind == e.kind && (e.kind == EventKind::goal || event.item == e.item) && event.frame < e.beforeFrame) return true;
+        if (event.kind == e.kind && (e.kind == EventKind::goal || event.item == e.item) && event.frame < e.beforeFrame)
+            return true;
     return false;
 }
 
@@ -117,7 +120,8 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     LevelRun run(level, script.placements);
     const double dt = level.world.timeStep;
     std::int64_t steps = level.defaultSteps();
-    if (level.level.goal && level.level.goal->timeLimit) steps = static_cast<std::int64_t>(std::ceil(*level.level.goal->timeLimit / dt - 1e-9));
+    if (level.level.goal && level.level.goal->timeLimit)
+        steps = static_cast<std::int64_t>(std::ceil(*level.level.goal->timeLimit / dt - 1e-9));
     if (script.steps) steps = *script.steps;
     if (options.steps) steps = *options.steps;
     const std::int64_t every = options.everyGiven ? options.every : script.every.value_or(options.every);
@@ -158,7 +162,8 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
             for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
                 if (const std::string why = takeAction(script.actions[next], run); !why.empty())
                     failures.push_back(options.script + ":" + std::to_string(script.actions[next].place.line) + ":" +
-                                       std::to_string(script.actions[next].place.column) + ": at frame " + std::to_string(i) + ": " + why);
+                                       std::to_string(script.actions[next].place.column) + ": at frame " +
+                                       std::to_string(i) + ": " + why);
             if (i % every == 0) record();
             if (i >= steps || (run.goalFrame() && i >= *run.goalFrame() + tail) || interrupted()) break;
             run.step();
@@ -174,14 +179,15 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     for (const Expectation& e : script.expectations) {
         judged.emplace_back(e.describe(), met(e, run));
         if (!judged.back().second)
-            failures.push_back(options.script + ":" + std::to_string(e.place.line) + ":" + std::to_string(e.place.column) +
-                               ": expectation failed: " + e.describe());
+            failures.push_back(options.script + ":" + std::to_string(e.place.line) + ":" +
+                               std::to_string(e.place.column) + ": expectation failed: " + e.describe());
     }
     const std::string signal = interruptingSignal();
     std::string reason;
-    if (!options.out.empty() &&
-        !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json", summaryJson(run, level, judged, signal), reason)) {
-        err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << ": " << reason << '\n';
+    if (!options.out.empty() && !writeTextFileAtomically(std::filesystem::path(options.out) / "summary.json",
+                                                         summaryJson(run, level, judged, signal), reason)) {
+        err << "rube run: cannot write " << (std::filesystem::path(options.out) / "summary.json").string() << ": "
+            << reason << '\n';
         return ExitCode::failed;
     }
     // An interrupted run's trace is discarded (by `trace`), as a scene's is.
@@ -193,15 +199,17 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
     out << "method:           " << methodDescription(run.world()) << '\n';
     out << "steps:            " << run.frame() << '\n';
     for (const GameEvent& e : run.events())
-        out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item) << '\n';
+        out << "event:            frame " << e.frame << " " << eventName(e.kind) << (e.item.empty() ? "" : " " + e.item)
+            << '\n';
     // A level without a [goal] has nothing to miss: it says so and exits 0, as a physics scene does.
-    const std::string goalWords = run.goalFrame()        ? "reached at frame " + std::to_string(*run.goalFrame())
+    const std::string goalWords = run.goalFrame()    ? "reached at frame " + std::to_string(*run.goalFrame())
                                   : level.level.goal ? std::string("not reached")
                                                      : std::string("none (the level has no [goal])");
     out << "goal:             " << goalWords << '\n';
     out << "speed clamps:     " << run.world().stats().speedClamps << '\n';
     out << "isolated bodies:  " << run.world().stats().isolatedBodies << '\n';
-    if (signal.empty() && !options.trace.empty()) out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
+    if (signal.empty() && !options.trace.empty())
+        out << "trace:            " << options.trace << " (" << trace.rows() << " rows)\n";
     if (recorder && !options.out.empty())
         out << "frames:           " << framesWritten << " in " << options.out << " (summary in " << options.out
             << "/summary.json)\n";

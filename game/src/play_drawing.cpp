@@ -29,7 +29,8 @@ void PlaySession::drawEditing(render::DrawList& list) const {
     };
     if (!drag_) {
         if (const int i = placedItemAtCursor(); i >= 0)
-            outlineBodies(placements_[static_cast<std::size_t>(i)], {render::Color::transparent(), palette["highlight"], 3.0f});
+            outlineBodies(placements_[static_cast<std::size_t>(i)],
+                          {render::Color::transparent(), palette["highlight"], 3.0f});
         return;
     }
     if (bar_.contains(cursor_)) return;
@@ -50,7 +51,8 @@ void PlaySession::draw(render::DrawList& list) const {
         drawEditing(list);
         modeLine = "EDIT  drag items in, [ ] turns, right-click removes, drag a cannon to aim, Space runs";
     }
-    bar_.draw(list, [this](ItemKind kind) { return remaining(kind); }, modeLine, message_, messageColor_);
+    bar_.draw(
+        list, [this](ItemKind kind) { return remaining(kind); }, modeLine, message_, messageColor_);
 }
 
 } // namespace rube::game

@@ -18,8 +18,8 @@ using play::normalDegrees;
 using play::number;
 using play::snap;
 
-constexpr double kGridPerMetre = 20.0;  // placements snap to 5 cm, so scripts read as round numbers
-constexpr float kPickPixels = 6.0f;     // how near the cursor must be to an item to pick it
+constexpr double kGridPerMetre = 20.0; // placements snap to 5 cm, so scripts read as round numbers
+constexpr float kPickPixels = 6.0f;    // how near the cursor must be to an item to pick it
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 ab = b - a;
@@ -33,7 +33,8 @@ double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
 int PlaySession::remaining(ItemKind kind) const {
     const auto stock = level_.level.inventory.find(itemKindName(kind));
     int left = stock == level_.level.inventory.end() ? 0 : stock->second;
-    left -= static_cast<int>(std::count_if(placements_.begin(), placements_.end(), [&](const Placement& p) { return p.kind == kind; }));
+    left -= static_cast<int>(
+        std::count_if(placements_.begin(), placements_.end(), [&](const Placement& p) { return p.kind == kind; }));
     if (drag_ && drag_->placement.kind == kind) --left;
     return left;
 }
@@ -50,7 +51,8 @@ void PlaySession::updateDrag() {
     candidate.push_back(p);
     drag_->refusal = checkPlacements(level_, candidate);
     if (drag_->refusal) say(drag_->refusal->message, "magnet");
-    else say(std::string(itemKindName(p.kind)) + " at " + formatPair(p.position.x, p.position.y) + ": release to place");
+    else
+        say(std::string(itemKindName(p.kind)) + " at " + formatPair(p.position.x, p.position.y) + ": release to place");
 }
 
 void PlaySession::drop() {
@@ -61,10 +63,12 @@ void PlaySession::drop() {
         say("put back: " + kind);
     } else if (drag.refusal) {
         // A refused move puts the item back where it was; a refused new item goes back to the bar.
-        if (drag.liftedFrom) placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom), drag.original);
+        if (drag.liftedFrom)
+            placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom), drag.original);
         say("not placed: " + drag.refusal->message, "magnet");
     } else {
-        const auto at = drag.liftedFrom ? placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom) : placements_.end();
+        const auto at = drag.liftedFrom ? placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom)
+                                        : placements_.end();
         placements_.insert(at, drag.placement);
         say("placed " + kind + " at " + formatPair(drag.placement.position.x, drag.placement.position.y));
     }

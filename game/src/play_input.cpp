@@ -21,7 +21,7 @@ using render::Key;
 using render::KeyAction;
 using render::MouseButton;
 
-constexpr double kTurnStep = 15.0;      // degrees per wheel notch or [ ] press
+constexpr double kTurnStep = 15.0; // degrees per wheel notch or [ ] press
 
 // The levels' items the cursor aims by dragging or the wheel: cannons.
 bool aimable(ItemKind kind) { return kind->plays(PartRole::fire); }
@@ -142,7 +142,9 @@ void PlaySession::key(Key key, KeyAction action) {
     case Key::escape:
         if (drag_) {
             // Escape while dragging cancels the drag: a lifted item goes back where it was.
-            if (drag_->liftedFrom) placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
+            if (drag_->liftedFrom)
+                placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom),
+                                   drag_->original);
             drag_.reset();
             rebuildPreview();
         } else {

@@ -19,8 +19,8 @@ using play::kTrailPoints;
 using play::kTrailSeconds;
 using render::Palette;
 
-constexpr int kMostStepsPerCall = 8;    // advance() drops time beyond this many steps
-constexpr double kSlowMotion = 0.1;     // S: the fraction of real time the machine runs at
+constexpr int kMostStepsPerCall = 8; // advance() drops time beyond this many steps
+constexpr double kSlowMotion = 0.1;  // S: the fraction of real time the machine runs at
 
 // The levels' items a click uses while running.
 bool usable(ItemKind kind) { return kind->clickAction().has_value(); }
@@ -40,11 +40,9 @@ std::vector<ItemKind> stockOf(const SceneDesc& level) {
 } // namespace
 
 PlaySession::PlaySession(SceneDesc level, std::string levelPath, render::FrameSize levelFrame)
-    : level_(std::move(level)),
-      levelPath_(std::move(levelPath)),
+    : level_(std::move(level)), levelPath_(std::move(levelPath)),
       bar_(levelCamera(level_, levelFrame), levelFrame, stockOf(level_)),
-      view_(level_.name, levelCamera(level_, levelFrame), levelFrame),
-      messageColor_(Palette::greybox()["hud_text"]) {
+      view_(level_.name, levelCamera(level_, levelFrame), levelFrame), messageColor_(Palette::greybox()["hud_text"]) {
     rebuildPreview();
     say(level_.description.empty() ? "place items from the bar, then press Space" : level_.description);
 }
@@ -59,12 +57,14 @@ void PlaySession::load(const ScriptDesc& script) {
     aims_.clear();
     scripted_.clear();
     for (const Action& a : script.actions) {
-        if (a.frame == 0 && (a.kind == ActionKind::aim || a.kind == ActionKind::rotate)) aims_[level_.level.find(a.item)] = a;
+        if (a.frame == 0 && (a.kind == ActionKind::aim || a.kind == ActionKind::rotate))
+            aims_[level_.level.find(a.item)] = a;
         else scripted_.push_back(a);
     }
     rebuildPreview();
     say("loaded " + std::to_string(placements_.size()) + " placements and " + std::to_string(aims_.size()) + " aims" +
-        (scripted_.empty() ? std::string() : "; the script's " + std::to_string(scripted_.size()) + " other actions play as it runs"));
+        (scripted_.empty() ? std::string()
+                           : "; the script's " + std::to_string(scripted_.size()) + " other actions play as it runs"));
 }
 
 void PlaySession::rebuildPreview() {
@@ -79,7 +79,8 @@ render::Point PlaySession::pixelOf(Vec2 world) const { return bar_.toPixel(world
 
 void PlaySession::start() {
     if (drag_) {
-        if (drag_->liftedFrom) placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
+        if (drag_->liftedFrom)
+            placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
         drag_.reset();
     }
     aiming_ = -1;
@@ -102,7 +103,9 @@ void PlaySession::takeScripted() {
         Action a = scripted_[nextScripted_];
         a.frame = run_->frame();
         if (const std::string why = takeAction(a, *run_); !why.empty()) {
-            say("the script's " + std::string(actionVerb(a.kind)) + " " + a.item + " at frame " + std::to_string(a.frame) + ": " + why, "magnet");
+            say("the script's " + std::string(actionVerb(a.kind)) + " " + a.item + " at frame " +
+                    std::to_string(a.frame) + ": " + why,
+                "magnet");
             continue;
         }
         actions_.push_back(a);
@@ -159,7 +162,9 @@ void PlaySession::useItemAtCursor() {
     const ItemDesc& desc = level_.level.items[static_cast<std::size_t>(item)];
     const ItemState& state = run_->states()[static_cast<std::size_t>(item)];
     if (desc.name.empty()) {
-        say("this " + std::string(itemKindName(desc.kind)) + " has no name, so a script cannot use it: name it in the level", "magnet");
+        say("this " + std::string(itemKindName(desc.kind)) +
+                " has no name, so a script cannot use it: name it in the level",
+            "magnet");
         return;
     }
     if (const std::string spent = desc.kind->spent(desc, state); !spent.empty()) say(spent, "magnet");
@@ -186,8 +191,10 @@ std::string PlaySession::recordedScript() const {
         goal.beforeFrame = *run_->goalFrame() + 1;
         script.expectations.push_back(goal);
     }
-    return writeScript(script, "# Recorded by `rube play` at level '" + level_.name + "'. Replay it off-screen, frame for frame:\n"
-                                   "#   rube run " + levelPath_ + " --script THIS_FILE --out DIR\n");
+    return writeScript(script, "# Recorded by `rube play` at level '" + level_.name +
+                                   "'. Replay it off-screen, frame for frame:\n"
+                                   "#   rube run " +
+                                   levelPath_ + " --script THIS_FILE --out DIR\n");
 }
 
 } // namespace rube::game

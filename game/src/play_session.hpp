@@ -117,15 +117,15 @@ private:
     InventoryBar bar_;
     LevelView view_;
     std::vector<Placement> placements_;
-    std::map<int, Action> aims_;             // cannon item -> its frame-0 aim, set while editing
-    std::unique_ptr<LevelRun> preview_;      // the machine at step 0, as placed (editing)
-    std::unique_ptr<LevelRun> run_;          // the machine running
-    std::vector<Action> actions_;            // taken in the present run, by hand or from a loaded script
-    std::vector<Action> scripted_;           // a loaded script's actions other than its frame-0 aims
-    std::size_t nextScripted_ = 0;           // the first of them not yet taken in this run
+    std::map<int, Action> aims_;        // cannon item -> its frame-0 aim, set while editing
+    std::unique_ptr<LevelRun> preview_; // the machine at step 0, as placed (editing)
+    std::unique_ptr<LevelRun> run_;     // the machine running
+    std::vector<Action> actions_;       // taken in the present run, by hand or from a loaded script
+    std::vector<Action> scripted_;      // a loaded script's actions other than its frame-0 aims
+    std::size_t nextScripted_ = 0;      // the first of them not yet taken in this run
     std::optional<Drag> drag_;
-    int aiming_ = -1;                        // the cannon being aimed by dragging, or -1
-    render::Point cursor_;                   // pixels from the top-left
+    int aiming_ = -1;      // the cannon being aimed by dragging, or -1
+    render::Point cursor_; // pixels from the top-left
     Vec2 cursorWorld_;
     std::string message_;
     render::Color messageColor_;

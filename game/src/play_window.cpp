@@ -19,8 +19,8 @@ namespace rube::game {
 namespace {
 
 std::string noWindowAdvice(const PlayOptions& options) {
-    return "render it off-screen with 'rube run " + options.level + " --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play " +
-           options.level + "'";
+    return "render it off-screen with 'rube run " + options.level +
+           " --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play " + options.level + "'";
 }
 
 bool hasDisplay() {
@@ -39,7 +39,8 @@ ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostrea
     }
     const SceneDesc& level = *load.scene;
     if (!level.level.isLevel()) {
-        err << "rube play: " << options.level << " is a physics scene, not a level (it has no items, inventory or goal): watch it with 'rube run "
+        err << "rube play: " << options.level
+            << " is a physics scene, not a level (it has no items, inventory or goal): watch it with 'rube run "
             << options.level << " --out DIR'\n";
         return ExitCode::badInput;
     }
@@ -55,7 +56,8 @@ ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostrea
     if (!options.record.empty()) {
         const std::filesystem::path folder = std::filesystem::absolute(options.record).parent_path();
         if (!std::filesystem::is_directory(folder)) {
-            err << "rube play: --record " << options.record << ": the folder " << folder.string() << " does not exist\n";
+            err << "rube play: --record " << options.record << ": the folder " << folder.string()
+                << " does not exist\n";
             return ExitCode::badInput;
         }
         if (std::filesystem::is_directory(options.record)) {
@@ -122,20 +124,23 @@ ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostrea
     out << "window frames:    " << framesDrawn << " (" << framesRunning << " while running)\n";
     if (framesRunning > 1 && runningSeconds > 0.0) {
         char text[64];
-        std::snprintf(text, sizeof text, "%.1f fps while running", static_cast<double>(framesRunning - 1) / runningSeconds);
+        std::snprintf(text, sizeof text, "%.1f fps while running",
+                      static_cast<double>(framesRunning - 1) / runningSeconds);
         out << "frame rate:       " << text << '\n';
     }
     if (const LevelRun* run = session.run()) {
         out << "steps:            " << run->frame() << '\n';
-        out << "goal:             " << (run->goalFrame() ? "reached at frame " + std::to_string(*run->goalFrame()) : std::string("not reached")) << '\n';
+        out << "goal:             "
+            << (run->goalFrame() ? "reached at frame " + std::to_string(*run->goalFrame()) : std::string("not reached"))
+            << '\n';
     }
     if (!options.record.empty()) {
         if (std::string reason; !writeTextFileAtomically(options.record, session.recordedScript(), reason)) {
             err << "rube play: cannot write " << options.record << ": " << reason << '\n';
             return ExitCode::failed;
         }
-        out << "recorded:         " << options.record << " (replay: rube run " << options.level << " --script " << options.record
-            << " --out DIR)\n";
+        out << "recorded:         " << options.record << " (replay: rube run " << options.level << " --script "
+            << options.record << " --out DIR)\n";
     }
     return ExitCode::ok;
 }

@@ -15,14 +15,14 @@ namespace rube::game {
 
 /// What `rube play` was asked to do.
 struct PlayOptions {
-    std::string level;                        ///< the level file
-    std::string script;                       ///< --script: start from its placements and aims
-    std::string record;                       ///< --record: write the session as a script here when it ends
-    render::FrameSize size{1280, 720};        ///< --size of the level area (the bar adds its height)
-    bool runAtOnce = false;                   ///< --run: start the machine without waiting for Space
-    std::optional<std::int64_t> quitAfter;    ///< --quit-after N: close N frames after the machine starts
-    int stepsPerFrame = 0;                    ///< --steps-per-frame K: fixed pace; 0 follows real time
-    bool vsync = true;                        ///< false with --no-vsync: draw as fast as possible
+    std::string level;                     ///< the level file
+    std::string script;                    ///< --script: start from its placements and aims
+    std::string record;                    ///< --record: write the session as a script here when it ends
+    render::FrameSize size{1280, 720};     ///< --size of the level area (the bar adds its height)
+    bool runAtOnce = false;                ///< --run: start the machine without waiting for Space
+    std::optional<std::int64_t> quitAfter; ///< --quit-after N: close N frames after the machine starts
+    int stepsPerFrame = 0;                 ///< --steps-per-frame K: fixed pace; 0 follows real time
+    bool vsync = true;                     ///< false with --no-vsync: draw as fast as possible
 };
 
 /// Plays a level in a window until it is closed (or Escape, or --quit-after), then writes the

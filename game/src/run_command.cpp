@@ -107,8 +107,9 @@ std::string unstableStateMessage(const World& world) {
     if (!s.nonFinite && s.isolatedBodies == 0) return "";
     std::string text = "a body's state became NaN or infinite";
     if (s.isolatedBodies > 0)
-        text += ": " + std::to_string(s.isolatedBodies) + (s.isolatedBodies == 1 ? " body" : " bodies") + " frozen, the first " +
-                (s.firstIsolatedKind == Other::body ? "rigid body " : "circle ") + std::to_string(s.firstIsolatedSlot);
+        text += ": " + std::to_string(s.isolatedBodies) + (s.isolatedBodies == 1 ? " body" : " bodies") +
+                " frozen, the first " + (s.firstIsolatedKind == Other::body ? "rigid body " : "circle ") +
+                std::to_string(s.firstIsolatedSlot);
     return text + "; the run's results are not physical";
 }
 
@@ -120,10 +121,11 @@ std::string methodDescription(const World& world) {
     const std::int64_t bodySteps = stats.exactBodySteps + stats.solverBodySteps;
     char share[32] = "-";
     if (bodySteps > 0)
-        std::snprintf(share, sizeof share, "%.1f %%", 100.0 * static_cast<double>(stats.exactBodySteps) / static_cast<double>(bodySteps));
+        std::snprintf(share, sizeof share, "%.1f %%",
+                      100.0 * static_cast<double>(stats.exactBodySteps) / static_cast<double>(bodySteps));
     return text + " (exact " + std::to_string(stats.steps - solver) + " steps, solver " + std::to_string(solver) +
-           "; body-steps exact " + std::to_string(stats.exactBodySteps) + ", solver " + std::to_string(stats.solverBodySteps) +
-           ", exact share " + share + ")";
+           "; body-steps exact " + std::to_string(stats.exactBodySteps) + ", solver " +
+           std::to_string(stats.solverBodySteps) + ", exact share " + share + ")";
 }
 
 ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& err) {
@@ -131,7 +133,8 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
     if (!options.method.empty()) {
         method = methodFromName(options.method);
         if (!method) {
-            err << "rube run: unknown method '" << options.method << "' (valid methods: " << validMethodNames() << ")\n";
+            err << "rube run: unknown method '" << options.method << "' (valid methods: " << validMethodNames()
+                << ")\n";
             return ExitCode::badInput;
         }
     }
@@ -195,8 +198,8 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
         ViewOptions viewOptions;
         viewOptions.trails = options.trails;
         viewOptions.impacts = options.debugImpacts;
-        frames.view = std::make_unique<SceneView>(scene.name, world, sceneCamera(frameScene(scene, world), options.size),
-                                                  options.size, viewOptions);
+        frames.view = std::make_unique<SceneView>(
+            scene.name, world, sceneCamera(frameScene(scene, world), options.size), options.size, viewOptions);
         frames.total = std::min(options.frames.value_or(std::numeric_limits<std::int64_t>::max()), steps / every + 1);
     }
     auto progress = std::make_unique<ProgressLine>(err, recording && options.progress, frames.total);
@@ -238,7 +241,8 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
         printSummary(out, scene, world, std::chrono::duration<double>(physicsTime).count(), shown, trace,
                      recording ? &recorded : nullptr, frames.target);
         out << "interrupted:      by " << interruptingSignal() << " after " << world.stats().steps << " steps\n";
-        err << "rube run: interrupted by " << interruptingSignal() << " after " << world.stats().steps << " steps; no trace written";
+        err << "rube run: interrupted by " << interruptingSignal() << " after " << world.stats().steps
+            << " steps; no trace written";
         // The frames already written stay: each is whole (written under a temporary name, then renamed).
         if (!options.out.empty()) err << "; " << recorded.frames << " frames written";
         if (!options.video.empty()) err << "; no video written";

@@ -27,23 +27,24 @@ std::string unstableStateMessage(const World& world);
 
 /// What `rube run` was asked to do.
 struct RunOptions {
-    std::string scene;                 ///< the scene file
-    std::string script;                ///< --script: a level's scripted playthrough, empty for none
-    bool everyGiven = false;           ///< --every was given (it then overrides a script's capture)
-    bool sizeGiven = false;            ///< --size was given (it then overrides a script's capture)
-    bool noRender = false;             ///< --no-render: headless on purpose, no GL context at all
-    std::optional<std::int64_t> steps; ///< --steps, else (frames - 1) x every with --frames, else the scene's duration, else 600
-    std::string trace;                 ///< --trace file, empty for none
-    std::string method;                ///< --method, empty for the scene's own
-    std::string out;                   ///< --out folder for frame_00000.png, ...; empty for no frames
-    std::string video;                 ///< --video FILE (.mp4, .webm, .gif) through ffmpeg; empty for none
+    std::string scene;       ///< the scene file
+    std::string script;      ///< --script: a level's scripted playthrough, empty for none
+    bool everyGiven = false; ///< --every was given (it then overrides a script's capture)
+    bool sizeGiven = false;  ///< --size was given (it then overrides a script's capture)
+    bool noRender = false;   ///< --no-render: headless on purpose, no GL context at all
+    std::optional<std::int64_t>
+        steps;          ///< --steps, else (frames - 1) x every with --frames, else the scene's duration, else 600
+    std::string trace;  ///< --trace file, empty for none
+    std::string method; ///< --method, empty for the scene's own
+    std::string out;    ///< --out folder for frame_00000.png, ...; empty for no frames
+    std::string video;  ///< --video FILE (.mp4, .webm, .gif) through ffmpeg; empty for none
     render::GlBackend gl = render::GlBackend::automatic; ///< --gl: the offscreen back end that draws the frames
-    std::int64_t every = 1;            ///< --every: steps between frames
-    std::optional<std::int64_t> frames; ///< --frames: how many frames at most, frame 0 included
-    render::FrameSize size{1280, 720}; ///< --size, pixels
-    bool trails = false;               ///< --trails: each dynamic body's recent path
-    bool debugImpacts = false;         ///< --debug-impacts: points of impact and collision normals
-    bool progress = false;             ///< show a progress line on `err` (only when it is a terminal)
+    std::int64_t every = 1;                              ///< --every: steps between frames
+    std::optional<std::int64_t> frames;                  ///< --frames: how many frames at most, frame 0 included
+    render::FrameSize size{1280, 720};                   ///< --size, pixels
+    bool trails = false;                                 ///< --trails: each dynamic body's recent path
+    bool debugImpacts = false;                           ///< --debug-impacts: points of impact and collision normals
+    bool progress = false;                               ///< show a progress line on `err` (only when it is a terminal)
 };
 
 /// Whether the run draws frames at all (--out or --video).

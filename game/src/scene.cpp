@@ -15,8 +15,8 @@ std::int64_t SceneDesc::defaultSteps() const {
 }
 
 std::size_t SceneDesc::dynamicCircleCount() const {
-    return static_cast<std::size_t>(std::count_if(circles.begin(), circles.end(),
-                                                  [](const CircleDef& c) { return c.motion == Motion::dynamic; }));
+    return static_cast<std::size_t>(
+        std::count_if(circles.begin(), circles.end(), [](const CircleDef& c) { return c.motion == Motion::dynamic; }));
 }
 
 int SceneDesc::findRope(std::string_view name) const {
@@ -33,7 +33,8 @@ World buildWorld(const SceneDesc& scene) {
     for (const SegmentDef& segment : scene.segments) world.addSegment(segment);
     for (const SceneRope& rope : scene.ropes)
         world.addRope({circles[static_cast<std::size_t>(rope.circle)],
-                       rope.other >= 0 ? circles[static_cast<std::size_t>(rope.other)] : CircleId{}, rope.anchor, rope.length});
+                       rope.other >= 0 ? circles[static_cast<std::size_t>(rope.other)] : CircleId{}, rope.anchor,
+                       rope.length});
     std::vector<BodyId> bodies;
     for (const RigidBodyDef& body : scene.bodies) bodies.push_back(world.addBody(body));
     for (const ScenePivot& pivot : scene.pivots)

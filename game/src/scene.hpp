@@ -28,31 +28,31 @@ struct SceneRope {
 
 /// A [[pivot]] as the file names it: the body by its index in SceneDesc::bodies.
 struct ScenePivot {
-    int body = -1;     ///< the rigid body
-    Vec2 localAnchor;  ///< in the body's frame, m
-    Vec2 worldAnchor;  ///< in the world, m
+    int body = -1;    ///< the rigid body
+    Vec2 localAnchor; ///< in the body's frame, m
+    Vec2 worldAnchor; ///< in the world, m
 };
 
 /// Everything a scene file says, validated; the physics definitions are ready to hand to a World.
 /// Circles and segments refer to paths by index into `paths`, which is also the World's index.
 struct SceneDesc {
-    std::string name;               ///< shown in the run summary; by convention the file's stem
-    std::string description;        ///< one sentence: what the scene demonstrates
-    WorldDef world;                 ///< gravity, time step, method, bounds: the physics defaults unless set
-    std::optional<double> duration; ///< seconds `rube run` simulates when no --steps is given
-    std::optional<Aabb> view;       ///< [view]: the region rendered frames show, else chosen from bounds or bodies
-    std::vector<NamedPath> paths;    ///< in file order: index i is the World's path i
-    std::vector<CircleDef> circles;  ///< in file order, [[circle_grid]] circles row by row from the bottom
+    std::string name;                 ///< shown in the run summary; by convention the file's stem
+    std::string description;          ///< one sentence: what the scene demonstrates
+    WorldDef world;                   ///< gravity, time step, method, bounds: the physics defaults unless set
+    std::optional<double> duration;   ///< seconds `rube run` simulates when no --steps is given
+    std::optional<Aabb> view;         ///< [view]: the region rendered frames show, else chosen from bounds or bodies
+    std::vector<NamedPath> paths;     ///< in file order: index i is the World's path i
+    std::vector<CircleDef> circles;   ///< in file order, [[circle_grid]] circles row by row from the bottom
     std::vector<SegmentDef> segments; ///< in file order
     std::vector<std::string> circleNames;  ///< the `name` of each circle, "" when unnamed
     std::vector<std::string> segmentNames; ///< the `name` of each segment, "" when unnamed
-    std::vector<Water> waters;      ///< [[water]] pools, in file order
-    std::vector<SceneRope> ropes;    ///< [[rope]] in file order: index i is the World's rope i
-    std::vector<std::string> ropeNames; ///< the `name` of each rope, "" when unnamed
-    std::vector<RigidBodyDef> bodies; ///< every [[box]], then every [[capsule]]: index i is the World's body i
-    std::vector<std::string> bodyNames; ///< the `name` of each box or capsule, "" when unnamed
-    std::vector<ScenePivot> pivots;    ///< [[pivot]] in file order
-    LevelDesc level;                ///< items, inventory, zones and goal: empty for a physics scene
+    std::vector<Water> waters;             ///< [[water]] pools, in file order
+    std::vector<SceneRope> ropes;          ///< [[rope]] in file order: index i is the World's rope i
+    std::vector<std::string> ropeNames;    ///< the `name` of each rope, "" when unnamed
+    std::vector<RigidBodyDef> bodies;      ///< every [[box]], then every [[capsule]]: index i is the World's body i
+    std::vector<std::string> bodyNames;    ///< the `name` of each box or capsule, "" when unnamed
+    std::vector<ScenePivot> pivots;        ///< [[pivot]] in file order
+    LevelDesc level;                       ///< items, inventory, zones and goal: empty for a physics scene
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.
     std::int64_t defaultSteps() const;
@@ -63,7 +63,8 @@ struct SceneDesc {
 };
 
 /// Every time-step method, in the order help and error messages list them.
-inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver, Method::automatic};
+inline constexpr Method kAllMethods[] = {Method::discrete, Method::turnBased, Method::exact, Method::solver,
+                                         Method::automatic};
 
 /// The number of steps a run takes when the scene has no duration (10 s at 60 steps per second).
 inline constexpr std::int64_t kDefaultSteps = 600;

@@ -7,11 +7,13 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kCircleKeys[] = {"position", "velocity", "angular_velocity", "inertia", "radius", "mass",
-                                            "bounciness", "friction", "motion", "path"};
-constexpr std::string_view kGridKeys[] = {"origin", "columns", "rows", "spacing", "stagger", "velocity", "angular_velocity",
-                                          "inertia", "radius", "mass", "bounciness", "friction", "motion", "path"};
-constexpr std::string_view kSegmentKeys[] = {"a", "b", "radius", "bounciness", "friction", "path", "surface_speed", "pivot"};
+constexpr std::string_view kCircleKeys[] = {"position", "velocity",   "angular_velocity", "inertia", "radius",
+                                            "mass",     "bounciness", "friction",         "motion",  "path"};
+constexpr std::string_view kGridKeys[] = {"origin",     "columns",          "rows",    "spacing", "stagger",
+                                          "velocity",   "angular_velocity", "inertia", "radius",  "mass",
+                                          "bounciness", "friction",         "motion",  "path"};
+constexpr std::string_view kSegmentKeys[] = {"a",        "b",    "radius",        "bounciness",
+                                             "friction", "path", "surface_speed", "pivot"};
 // A name is how goals and scripts refer to a body; it is not offered in a physics scene's key lists.
 constexpr std::string_view kNameKey[] = {"name"};
 constexpr std::string_view kMotionNames[] = {"dynamic", "kinematic", "static"};
@@ -75,18 +77,22 @@ void readCircleGrid(const toml::table& table, SceneReading& reading) {
     if (!origin || !columns || !rows || !spacing) return;
     if (*columns * *rows > kMaxGridCircles) {
         grid.error(grid.valuePlace("rows"), "circle_grid makes " + std::to_string(*columns * *rows) +
-                                                " circles; one grid may make at most " + std::to_string(kMaxGridCircles));
+                                                " circles; one grid may make at most " +
+                                                std::to_string(kMaxGridCircles));
         return;
     }
-    if (const auto total = static_cast<std::int64_t>(reading.scene.circles.size()) + *columns * *rows; total > kMaxSceneCircles) {
+    if (const auto total = static_cast<std::int64_t>(reading.scene.circles.size()) + *columns * *rows;
+        total > kMaxSceneCircles) {
         grid.error(grid.tablePlace(), "this circle_grid brings the scene to " + std::to_string(total) +
-                                          " circles, more than the " + std::to_string(kMaxSceneCircles) + " a scene may have");
+                                          " circles, more than the " + std::to_string(kMaxSceneCircles) +
+                                          " a scene may have");
         return;
     }
     // Neighbours closer than a diameter would start inside each other and fly apart on the first step.
     const double diameter = 2.0 * def.radius;
     if ((*columns > 1 && spacing->x < diameter) || (*rows > 1 && spacing->y < diameter)) {
-        const std::string got = spacing->x == spacing->y ? formatNumber(spacing->x) : formatPair(spacing->x, spacing->y);
+        const std::string got = spacing->x == spacing->y ? formatNumber(spacing->x)
+                                                         : formatPair(spacing->x, spacing->y);
         grid.error(grid.valuePlace("spacing"), "spacing must be at least the diameter " + formatNumber(diameter) +
                                                    " so the circles do not start overlapping, got " + got);
         return;
@@ -131,8 +137,9 @@ void readSegment(const toml::table& table, SceneReading& reading) {
 void readCircles(TableReader& root, SceneReading& reading) {
     const auto tables = root.arrayOfTables("circle");
     if (static_cast<std::int64_t>(tables.size()) > kMaxSceneCircles) {
-        reading.diag.error(placeOf(tables[kMaxSceneCircles]->source()), "too many [[circle]] tables: " + std::to_string(tables.size()) +
-                                                                          ", more than the " + std::to_string(kMaxSceneCircles) + " circles a scene may have");
+        reading.diag.error(placeOf(tables[kMaxSceneCircles]->source()),
+                           "too many [[circle]] tables: " + std::to_string(tables.size()) + ", more than the " +
+                               std::to_string(kMaxSceneCircles) + " circles a scene may have");
         return;
     }
     for (const toml::table* table : tables) readCircle(*table, reading);

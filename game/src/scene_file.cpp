@@ -14,22 +14,29 @@ namespace {
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 // Every top-level key, the level's tables (item, inventory, zone, goal) included, so a `[[zones]]`
 // typo is offered `zone`: one format for scenes and levels, one list.
-constexpr std::string_view kTopAndLevelKeys[] = {"name", "description", "world", "view", "path", "circle", "circle_grid",
-                                                 "segment", "water", "rope", "box", "capsule", "pivot",
-                                                 "item", "inventory", "zone", "goal"};
-constexpr std::string_view kWorldKeys[] = {"gravity",   "time_step",           "method",        "bounds",
-                                           "substeps",  "max_events_per_step", "resting_speed", "duration",
-                                           "air_drag",  "sleep_speed",         "time_to_sleep"};
+constexpr std::string_view kTopAndLevelKeys[] = {"name",        "description", "world",     "view", "path", "circle",
+                                                 "circle_grid", "segment",     "water",     "rope", "box",  "capsule",
+                                                 "pivot",       "item",        "inventory", "zone", "goal"};
+constexpr std::string_view kWorldKeys[] = {"gravity",  "time_step",           "method",        "bounds",
+                                           "substeps", "max_events_per_step", "resting_speed", "duration",
+                                           "air_drag", "sleep_speed",         "time_to_sleep"};
 constexpr std::string_view kAirDragKeys[] = {"linear", "quadratic"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
 constexpr std::string_view kViewKeys[] = {"min", "max"};
 constexpr std::string_view kPathKeys[] = {"name", "keys", "loop"};
 
 // A world key written at the top level is a common slip; say where it goes instead of guessing a typo.
-constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},  {"time_step", "[world]"},     {"method", "[world]"},
-                                 {"bounds", "[world]"},   {"substeps", "[world]"},      {"duration", "[world]"},
-                                 {"max_events_per_step", "[world]"}, {"resting_speed", "[world]"}, {"air_drag", "[world]"},
-                                 {"sleep_speed", "[world]"}, {"time_to_sleep", "[world]"}};
+constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},
+                                 {"time_step", "[world]"},
+                                 {"method", "[world]"},
+                                 {"bounds", "[world]"},
+                                 {"substeps", "[world]"},
+                                 {"duration", "[world]"},
+                                 {"max_events_per_step", "[world]"},
+                                 {"resting_speed", "[world]"},
+                                 {"air_drag", "[world]"},
+                                 {"sleep_speed", "[world]"},
+                                 {"time_to_sleep", "[world]"}};
 
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
@@ -120,11 +127,13 @@ std::optional<KinematicPath> readKeys(TableReader& path) {
     if (!node) return std::nullopt;
     const auto* array = node->as_array();
     if (!array) {
-        path.error(placeOf(node->source()), "keys must be an array of [t, x, y] keys, got " + std::string(typeName(*node)));
+        path.error(placeOf(node->source()),
+                   "keys must be an array of [t, x, y] keys, got " + std::string(typeName(*node)));
         return std::nullopt;
     }
     if (array->size() < 2) {
-        path.error(placeOf(node->source()), "keys must hold at least 2 keys [t, x, y], got " + std::to_string(array->size()));
+        path.error(placeOf(node->source()),
+                   "keys must hold at least 2 keys [t, x, y], got " + std::to_string(array->size()));
         return std::nullopt;
     }
     KinematicPath result;
@@ -132,15 +141,17 @@ std::optional<KinematicPath> readKeys(TableReader& path) {
     for (const toml::node& element : *array) {
         const auto* key = element.as_array();
         if (!key || key->size() < 3 || key->size() > 4) {
-            path.error(placeOf(element.source()), "a path key must be [t, x, y] or [t, x, y, angle], got " +
-                                                      (key ? std::to_string(key->size()) + " numbers" : std::string(typeName(element))));
+            path.error(placeOf(element.source()),
+                       "a path key must be [t, x, y] or [t, x, y, angle], got " +
+                           (key ? std::to_string(key->size()) + " numbers" : std::string(typeName(element))));
             ok = false;
             continue;
         }
         const auto t = readNumber(*key->get(0), "a path key's t", path.diagnostics());
         const auto x = readNumber(*key->get(1), "a path key's x", path.diagnostics());
         const auto y = readNumber(*key->get(2), "a path key's y", path.diagnostics());
-        const auto angle = key->size() == 4 ? readNumber(*key->get(3), "a path key's angle", path.diagnostics()) : std::optional<double>{0.0};
+        const auto angle = key->size() == 4 ? readNumber(*key->get(3), "a path key's angle", path.diagnostics())
+                                            : std::optional<double>{0.0};
         if (!t || !x || !y || !angle) {
             ok = false;
             continue;
@@ -193,7 +204,8 @@ std::optional<int> readPathReference(TableReader& table, SceneReading& reading) 
     for (const auto& [known, index] : reading.pathIndex) defined.push_back(known);
     std::string message = "unknown path '" + *name + "'";
     if (defined.empty()) message += " (no [[path]] is defined)";
-    else if (const auto match = closestMatch(*name, defined)) message += " (did you mean '" + std::string(*match) + "'?)";
+    else if (const auto match = closestMatch(*name, defined))
+        message += " (did you mean '" + std::string(*match) + "'?)";
     else message += " (defined paths: " + joinNames(defined) + ")";
     table.error(table.valuePlace("path"), std::move(message));
     return std::nullopt;
@@ -231,11 +243,13 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     const bool rotating = needsRotatingSolver(scene);
     if (rotating && namesMethod && !movesTurningBodies(scene.world.method)) {
         TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
-        worldTable.error(worldTable.valuePlace("method"), "method '" + std::string(methodName(scene.world.method)) +
-                                                              "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
+        worldTable.error(worldTable.valuePlace("method"),
+                         "method '" + std::string(methodName(scene.world.method)) +
+                             "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
     }
     // Naming a method too slow for the scene's size is an error at the name (method_budget.hpp).
-    if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : ""; !why.empty() && diag.empty()) {
+    if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : "";
+        !why.empty() && diag.empty()) {
         TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
         worldTable.error(worldTable.valuePlace("method"), why);
     }

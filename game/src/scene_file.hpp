@@ -18,8 +18,8 @@ namespace rube::game {
 
 /// The outcome of loading: a scene when there are no errors, else the errors, sorted by place.
 struct SceneLoad {
-    std::optional<SceneDesc> scene;  ///< present exactly when there are no errors
-    std::vector<SceneError> errors;  ///< every error found, top of the file first
+    std::optional<SceneDesc> scene; ///< present exactly when there are no errors
+    std::vector<SceneError> errors; ///< every error found, top of the file first
     /// True when the scene loaded.
     bool ok() const { return scene.has_value(); }
 };

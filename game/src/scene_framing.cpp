@@ -47,7 +47,8 @@ Aabb bodiesBox(const World& world) {
         include(box, s.a, s.radius);
         include(box, s.b, s.radius);
     }
-    if (!finite(box)) return {{-0.5 * kMinimumExtent, -0.5 * kMinimumExtent}, {0.5 * kMinimumExtent, 0.5 * kMinimumExtent}};
+    if (!finite(box))
+        return {{-0.5 * kMinimumExtent, -0.5 * kMinimumExtent}, {0.5 * kMinimumExtent, 0.5 * kMinimumExtent}};
     // Widen any side shorter than the minimum extent, keeping it centred on what is there.
     const auto widen = [](double& low, double& high) {
         const double missing = kMinimumExtent - (high - low);

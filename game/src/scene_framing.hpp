@@ -12,7 +12,7 @@ enum class FrameSource { view, bounds, bodies };
 
 /// The region of the world a run's frames show, and why.
 struct Framing {
-    render::Rect region;  ///< world metres, before the camera fits it to the frame's aspect
+    render::Rect region; ///< world metres, before the camera fits it to the frame's aspect
     FrameSource source = FrameSource::bodies;
 };
 

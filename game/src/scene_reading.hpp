@@ -12,9 +12,9 @@ namespace rube::game {
 
 /// What the table readers share while one file is read.
 struct SceneReading {
-    Diagnostics& diag; ///< where every reader reports
-    SceneDesc& scene;  ///< what the readers fill in
-    std::map<std::string, int, std::less<>> pathIndex; ///< path name -> index in scene.paths
+    Diagnostics& diag;                                     ///< where every reader reports
+    SceneDesc& scene;                                      ///< what the readers fill in
+    std::map<std::string, int, std::less<>> pathIndex;     ///< path name -> index in scene.paths
     std::map<std::string, SourcePlace, std::less<>> names; ///< every body and item name -> where it was defined
 };
 

@@ -13,8 +13,9 @@ namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kBoxKeys[] = {"position",   "size",     "half_extents", "angle_degrees", "mass",   "density",
-                                         "velocity",   "angular_velocity", "bounciness", "friction", "motion", "fixed_rotation"};
+constexpr std::string_view kBoxKeys[] = {"position",   "size",     "half_extents", "angle_degrees",
+                                         "mass",       "density",  "velocity",     "angular_velocity",
+                                         "bounciness", "friction", "motion",       "fixed_rotation"};
 // A name is how goals and scripts refer to a body; it is not offered in a physics scene's key list.
 constexpr std::string_view kNameKey[] = {"name"};
 constexpr std::string_view kPivotKeys[] = {"body", "anchor"};
@@ -36,7 +37,8 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
     if (hasSize == hasHalf) {
         body.error(hasSize ? body.valuePlace("half_extents") : body.tablePlace(),
                    shape == BodyShape::box ? "give a box its size = [width, height] or its half_extents, one of them"
-                                           : "give a capsule its size = [length, thickness] or its half_extents = [half core length, radius], one of them");
+                                           : "give a capsule its size = [length, thickness] or its half_extents = "
+                                             "[half core length, radius], one of them");
         return;
     }
     const auto extents = body.numberOrVec2(hasSize ? "size" : "half_extents", NumberRange::size(), Need::required);
@@ -63,8 +65,8 @@ void readRigidBody(const toml::table& table, SceneReading& reading, BodyShape sh
     else if (density) {
         def.mass = *density * areaOf(shape, def.halfExtents);
         if (!NumberRange::mass().contains(def.mass))
-            body.error(body.valuePlace("density"), "density times area gives a mass of " + formatNumber(def.mass) + " kg; it must be " +
-                                                       NumberRange::mass().describe() + " kg");
+            body.error(body.valuePlace("density"), "density times area gives a mass of " + formatNumber(def.mass) +
+                                                       " kg; it must be " + NumberRange::mass().describe() + " kg");
     }
     if (const auto v = body.vec2("velocity")) def.velocity = *v;
     if (const auto w = body.number("angular_velocity")) def.angularVelocity = *w;
@@ -95,7 +97,8 @@ std::optional<std::int64_t> namedBody(TableReader& pivot, const SceneReading& re
         if (!known.empty()) defined.push_back(known);
     std::string message = "unknown body '" + *name + "'";
     if (defined.empty()) message += " (no [[box]] or [[capsule]] has a name)";
-    else if (const auto match = closestMatch(*name, defined)) message += " (did you mean '" + std::string(*match) + "'?)";
+    else if (const auto match = closestMatch(*name, defined))
+        message += " (did you mean '" + std::string(*match) + "'?)";
     else message += " (named bodies: " + joinNames(defined) + ")";
     pivot.error(pivot.valuePlace("body"), std::move(message));
     return std::nullopt;
@@ -108,7 +111,9 @@ void readPivot(const toml::table& table, SceneReading& reading) {
     const toml::node* given = pivot.find("body");
     const auto index = given && given->is_string()
                            ? namedBody(pivot, reading)
-                           : pivot.integer("body", 0, std::max<std::int64_t>(0, static_cast<std::int64_t>(bodies.size()) - 1), Need::required);
+                           : pivot.integer("body", 0,
+                                           std::max<std::int64_t>(0, static_cast<std::int64_t>(bodies.size()) - 1),
+                                           Need::required);
     if (!index) return;
     if (bodies.empty()) {
         pivot.error(pivot.valuePlace("body"), "a pivot pins a rigid body: no [[box]] or [[capsule]] is defined");
@@ -119,7 +124,8 @@ void readPivot(const toml::table& table, SceneReading& reading) {
     // The anchor in the body's own frame: turned back by its angle.
     const Vec2 d = anchor - body.position;
     const double c = std::cos(body.angle), s = std::sin(body.angle);
-    reading.scene.pivots.push_back(ScenePivot{static_cast<int>(*index), {c * d.x + s * d.y, -s * d.x + c * d.y}, anchor});
+    reading.scene.pivots.push_back(
+        ScenePivot{static_cast<int>(*index), {c * d.x + s * d.y, -s * d.x + c * d.y}, anchor});
 }
 
 } // namespace

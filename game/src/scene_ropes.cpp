@@ -20,8 +20,9 @@ std::optional<int> readCircleReference(TableReader& rope, std::string_view key, 
     if (const auto* index = node->as_integer()) {
         const std::int64_t i = index->get();
         if (i < 0 || i >= static_cast<std::int64_t>(circles.size())) {
-            rope.error(place, std::string(key) + " must be a circle's index from 0 to " + std::to_string(circles.size()) +
-                                  " (exclusive) or its name, got " + std::to_string(i));
+            rope.error(place, std::string(key) + " must be a circle's index from 0 to " +
+                                  std::to_string(circles.size()) + " (exclusive) or its name, got " +
+                                  std::to_string(i));
             return std::nullopt;
         }
         return static_cast<int>(i);
@@ -33,10 +34,12 @@ std::optional<int> readCircleReference(TableReader& rope, std::string_view key, 
             if (reading.scene.circleNames[i] == name) return static_cast<int>(i);
             if (!reading.scene.circleNames[i].empty()) names.push_back(reading.scene.circleNames[i]);
         }
-        rope.error(place, "unknown circle '" + name + "'" + unknownNameHint(name, names, "named circles", "no [[circle]] has a name"));
+        rope.error(place, "unknown circle '" + name + "'" +
+                              unknownNameHint(name, names, "named circles", "no [[circle]] has a name"));
         return std::nullopt;
     }
-    rope.error(place, std::string(key) + " must be a circle's index (integer) or name (string), got " + std::string(typeName(*node)));
+    rope.error(place, std::string(key) + " must be a circle's index (integer) or name (string), got " +
+                          std::string(typeName(*node)));
     return std::nullopt;
 }
 
@@ -45,7 +48,8 @@ void readRope(const toml::table& table, SceneReading& reading) {
     const auto circle = readCircleReference(rope, "circle", reading, Need::required);
     const bool toCircle = rope.find("other") != nullptr;
     if (toCircle && rope.find("anchor")) {
-        rope.error(rope.valuePlace("anchor"), "a rope ends at an anchor or at another circle, not both: remove anchor or other");
+        rope.error(rope.valuePlace("anchor"),
+                   "a rope ends at an anchor or at another circle, not both: remove anchor or other");
         return;
     }
     const auto other = toCircle ? readCircleReference(rope, "other", reading, Need::required) : std::nullopt;
@@ -58,14 +62,16 @@ void readRope(const toml::table& table, SceneReading& reading) {
     const CircleDef& ball = reading.scene.circles[static_cast<std::size_t>(*circle)];
     if (ball.motion != Motion::dynamic) {
         // A rope pulls the circle it holds; a static or kinematic one cannot be pulled.
-        rope.error(rope.valuePlace("circle"), "a rope's circle must be dynamic (the rope pulls it); use other for a fixed end");
+        rope.error(rope.valuePlace("circle"),
+                   "a rope's circle must be dynamic (the rope pulls it); use other for a fixed end");
         return;
     }
     if (otherIndex == *circle) {
         rope.error(rope.valuePlace("other"), "a rope cannot join a circle to itself");
         return;
     }
-    const Vec2 farEnd = otherIndex >= 0 ? reading.scene.circles[static_cast<std::size_t>(otherIndex)].position : anchorPoint;
+    const Vec2 farEnd = otherIndex >= 0 ? reading.scene.circles[static_cast<std::size_t>(otherIndex)].position
+                                        : anchorPoint;
     const double apart = ball.position.distance(farEnd);
     // Without a length the rope is just taut at the start; a rope shorter than the ends' distance
     // would yank the ball on the first step, a mistake in the file rather than a plan.
@@ -76,8 +82,8 @@ void readRope(const toml::table& table, SceneReading& reading) {
     }
     // A millionth of slack for positions written to a few decimals (a bob at 15 degrees, say).
     if (apart > ropeLength * (1.0 + 1e-6)) {
-        rope.error(rope.valuePlace("length"), "the rope's ends start " + formatNumber(apart) + " m apart, more than its length " +
-                                                  formatNumber(ropeLength));
+        rope.error(rope.valuePlace("length"), "the rope's ends start " + formatNumber(apart) +
+                                                  " m apart, more than its length " + formatNumber(ropeLength));
         return;
     }
     reading.scene.ropes.push_back(SceneRope{*circle, otherIndex, anchorPoint, ropeLength});

@@ -18,7 +18,7 @@ using render::Palette;
 using render::Point;
 using render::Style;
 
-constexpr float kOutlineWidth = 1.5f;     // pixels: the greybox outline
+constexpr float kOutlineWidth = 1.5f; // pixels: the greybox outline
 // A thin line (radius 0) has no area to fill: drawn as a 3-pixel stroke, so it reads as a wall
 // and not as a hairline the eye misses (the renderer's zero-radius capsule is its outline alone).
 constexpr float kThinLineWidth = 3.0f;
@@ -26,22 +26,20 @@ constexpr float kThinLineWidth = 3.0f;
 // small balls (a pile seen whole) get a thinner outline and no spoke.
 constexpr float kSpokeMinRadius = 4.0f;
 constexpr float kSmallOutlineWidth = 1.0f;
-constexpr float kTrailWidth = 2.0f;       // pixels
-constexpr float kRopeWidth = 2.0f;        // pixels: thinner than a wall's 3, so a rope never reads as one
-constexpr float kRopePinRadius = 0.06f;   // m: the anchor's pin
+constexpr float kTrailWidth = 2.0f;     // pixels
+constexpr float kRopeWidth = 2.0f;      // pixels: thinner than a wall's 3, so a rope never reads as one
+constexpr float kRopePinRadius = 0.06f; // m: the anchor's pin
 // A trail keeps a point per step and per impact; past this many a trail of tiny steps stops growing.
 constexpr std::size_t kMaxTrailPoints = 2000;
 // Impact markers kept at most: a pile resolves hundreds of contacts per step.
 constexpr std::size_t kMaxImpactsShown = 4096;
-constexpr int kHudMargin = 8;             // pixels from the top-left corner
+constexpr int kHudMargin = 8; // pixels from the top-left corner
 // The HUD sits on a band of the background colour, a little see-through, so that it stays
 // readable over walls and balls and the scene still shows through.
 constexpr std::uint8_t kHudBandAlpha = 0xd8;
-constexpr int kGlyphHeight = 7;           // stb_easy_font units
+constexpr int kGlyphHeight = 7; // stb_easy_font units
 
-Point toPoint(Vec2 v) {
-    return {static_cast<float>(v.x), static_cast<float>(v.y)};
-}
+Point toPoint(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
 // The palette's fill and outline for a body that moves this way.
 Style styleFor(Motion motion, float outlineWidth) {
@@ -55,9 +53,7 @@ Style styleFor(Motion motion, float outlineWidth) {
 }
 
 // HUD glyphs are about 7 font units tall: 2 pixels per unit up to 1080 rows, then 3.
-int hudScale(render::FrameSize frame) {
-    return frame.height >= 1080 ? 3 : 2;
-}
+int hudScale(render::FrameSize frame) { return frame.height >= 1080 ? 3 : 2; }
 
 } // namespace
 
@@ -96,7 +92,8 @@ void drawRigidBodies(const World& world, render::DrawList& list) {
         const Style style = styleFor(b.motion, kSmallOutlineWidth);
         const Vec2 axis{std::cos(b.angle), std::sin(b.angle)};
         const Vec2 a = b.position - axis * b.halfExtents.x, e = b.position + axis * b.halfExtents.x;
-        if (b.shape == BodyShape::box) list.box(toPoint(b.position), toPoint(b.halfExtents), static_cast<float>(b.angle), style);
+        if (b.shape == BodyShape::box)
+            list.box(toPoint(b.position), toPoint(b.halfExtents), static_cast<float>(b.angle), style);
         else list.capsule(toPoint(a), toPoint(e), static_cast<float>(b.halfExtents.y), style);
         // A line from the centre along the body's own x axis: turning reads at a glance.
         list.line(toPoint(b.position), toPoint(e), kRopeWidth, style.outline);
@@ -121,7 +118,8 @@ void SceneView::drawCircles(const World& world, render::DrawList& list) const {
             list.circle(toPoint(c.position), radius, styleFor(c.motion, kSmallOutlineWidth));
         } else {
             // The spoke turns with the body, so rolling reads differently from sliding.
-            list.circleWithSpoke(toPoint(c.position), radius, static_cast<float>(c.angle), styleFor(c.motion, kOutlineWidth));
+            list.circleWithSpoke(toPoint(c.position), radius, static_cast<float>(c.angle),
+                                 styleFor(c.motion, kOutlineWidth));
         }
     }
 }
@@ -135,8 +133,8 @@ void SceneView::drawHud(const std::string& line, render::DrawList& list) const {
     const float height = static_cast<float>(frame_.height);
     const Point low = camera_.toWorld({0.0f, height - bandPixels}, frame_);
     const Point high = camera_.toWorld({width, height}, frame_);
-    list.box({0.5f * (low.x + high.x), 0.5f * (low.y + high.y)}, {0.5f * (high.x - low.x), 0.5f * (high.y - low.y)}, 0.0f,
-             {palette["background"].withAlpha(kHudBandAlpha), Color::transparent(), 0.0f});
+    list.box({0.5f * (low.x + high.x), 0.5f * (low.y + high.y)}, {0.5f * (high.x - low.x), 0.5f * (high.y - low.y)},
+             0.0f, {palette["background"].withAlpha(kHudBandAlpha), Color::transparent(), 0.0f});
     list.text(kHudMargin, kHudMargin, line, palette["hud_text"], scale);
 }
 
@@ -154,7 +152,8 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     drawCircles(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.
     drawWaters(world, list);
-    if (impacts_) impacts_->draw(list, world.time(), camera_.pixelsPerMetre(frame_), palette["impact"], palette["arrow"]);
+    if (impacts_)
+        impacts_->draw(list, world.time(), camera_.pixelsPerMetre(frame_), palette["impact"], palette["arrow"]);
     drawHud(hudLine(world, frame), list);
 }
 

@@ -30,7 +30,8 @@ constexpr std::string_view kArcNames[] = {"low", "high"};
 constexpr std::int64_t kMaxSteps = 216'000;
 
 // The item an action or expectation names must exist and be of the kind it acts on.
-bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level, PartRole role) {
+bool checkItem(TableReader& table, std::string_view key, const std::string& name, const SceneDesc& level,
+               PartRole role) {
     std::string message = itemReferenceError(level.level, key, name, role, " in level '" + level.name + "'");
     if (message.empty()) return true;
     table.error(table.valuePlace(key), std::move(message));
@@ -80,13 +81,14 @@ std::vector<std::string_view> placeKeys(const toml::table& table) {
 void checkPlacedName(TableReader& place, const Placement& p, const SceneDesc& level, const ScriptDesc& script) {
     if (p.name.empty()) return;
     if (level.level.find(p.name) >= 0) {
-        place.error(place.valuePlace("name"), "name '" + p.name + "' is taken by an item of level '" + level.name + "'");
+        place.error(place.valuePlace("name"),
+                    "name '" + p.name + "' is taken by an item of level '" + level.name + "'");
         return;
     }
     for (const Placement& earlier : script.placements)
         if (earlier.name == p.name)
-            place.error(place.valuePlace("name"),
-                        "name '" + p.name + "' is taken by the placement at line " + std::to_string(earlier.place.line));
+            place.error(place.valuePlace("name"), "name '" + p.name + "' is taken by the placement at line " +
+                                                      std::to_string(earlier.place.line));
 }
 
 void readPlacements(TableReader& root, const SceneDesc& level, ScriptDesc& script) {
@@ -136,11 +138,15 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         for (std::size_t i = 0; i < std::size(kDoNames); ++i)
             if (kDoNames[i] == verb->as_string()->get()) index = i;
     const ActionKind kind = index < std::size(kDoNames) ? static_cast<ActionKind>(index) : ActionKind::fire;
-    const std::span<const std::string_view> keys = kind == ActionKind::rotate     ? std::span<const std::string_view>(kRotateKeys)
-                                                   : kind == ActionKind::aim      ? std::span<const std::string_view>(kAimKeys)
-                                                   : kind == ActionKind::fireWhen ? std::span<const std::string_view>(kFireWhenKeys)
-                                                                                  : std::span<const std::string_view>(kItemKeys);
-    TableReader action(table, "in [[action]]", index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag);
+    const std::span<const std::string_view> keys = kind == ActionKind::rotate
+                                                       ? std::span<const std::string_view>(kRotateKeys)
+                                                   : kind == ActionKind::aim
+                                                       ? std::span<const std::string_view>(kAimKeys)
+                                                   : kind == ActionKind::fireWhen
+                                                       ? std::span<const std::string_view>(kFireWhenKeys)
+                                                       : std::span<const std::string_view>(kItemKeys);
+    TableReader action(table, "in [[action]]",
+                       index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag);
     if (!action.choice("do", kDoNames, Need::required)) return;
     Action a;
     a.kind = kind;
@@ -149,9 +155,10 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
     // A script reads as a timeline: an action listed after a later one is almost always a slip
     // (a frame number typed wrong), and taking it silently would play something else.
     if (!script.actions.empty() && a.frame < script.actions.back().frame)
-        action.error(action.valuePlace("frame"), "actions must be listed in frame order: frame " + std::to_string(a.frame) +
-                                                     " comes after frame " + std::to_string(script.actions.back().frame) +
-                                                     " (line " + std::to_string(script.actions.back().place.line) + ")");
+        action.error(action.valuePlace("frame"), "actions must be listed in frame order: frame " +
+                                                     std::to_string(a.frame) + " comes after frame " +
+                                                     std::to_string(script.actions.back().frame) + " (line " +
+                                                     std::to_string(script.actions.back().place.line) + ")");
     a.item = action.string("item", Need::required).value_or("");
     if (a.item.empty()) return;
     switch (kind) {
@@ -171,8 +178,11 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         a.point = action.vec2("point");
         a.target = action.string("target").value_or("");
         if (const auto arc = action.choice("arc", kArcNames)) a.highArc = *arc == 1;
-        const int ways = (action.find("angle") ? 1 : 0) + (action.find("point") ? 1 : 0) + (action.find("target") ? 1 : 0);
-        if (ways != 1) action.error(action.tablePlace(), "an aim needs exactly one of angle, point or target, got " + std::to_string(ways));
+        const int ways = (action.find("angle") ? 1 : 0) + (action.find("point") ? 1 : 0) +
+                         (action.find("target") ? 1 : 0);
+        if (ways != 1)
+            action.error(action.tablePlace(),
+                         "an aim needs exactly one of angle, point or target, got " + std::to_string(ways));
         if (!a.target.empty()) checkItem(action, "target", a.target, level, PartRole::aimTarget);
         break;
     }
@@ -185,8 +195,9 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
             std::vector<std::string_view> names;
             for (const std::string& name : level.ropeNames)
                 if (!name.empty()) names.push_back(name);
-            action.error(action.valuePlace("item"), "unknown rope '" + a.item + "' in level '" + level.name + "'" +
-                                                        unknownNameHint(a.item, names, "the level has", "the level has no named rope"));
+            action.error(action.valuePlace("item"),
+                         "unknown rope '" + a.item + "' in level '" + level.name + "'" +
+                             unknownNameHint(a.item, names, "the level has", "the level has no named rope"));
         }
         break;
     case ActionKind::fireWhen:
@@ -208,7 +219,8 @@ void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& scr
         const int ways = (expect.find("goal") ? 1 : 0) + (expect.find("hit") ? 1 : 0) + (expect.find("shot") ? 1 : 0) +
                          (expect.find("explosion") ? 1 : 0);
         if (ways != 1) {
-            expect.error(e.place, "an expectation needs exactly one of goal = true, hit, shot or explosion, got " + std::to_string(ways));
+            expect.error(e.place, "an expectation needs exactly one of goal = true, hit, shot or explosion, got " +
+                                      std::to_string(ways));
             continue;
         }
         if (const auto goal = expect.boolean("goal")) {
@@ -260,7 +272,8 @@ ScriptLoad parseScript(std::string_view text, const std::string& fileName, const
     if (const auto name = root.string("level", Need::required)) {
         script.level = *name;
         if (*name != level.name)
-            root.error(root.valuePlace("level"), "this script plays level '" + *name + "', but the level given is '" + level.name + "'");
+            root.error(root.valuePlace("level"),
+                       "this script plays level '" + *name + "', but the level given is '" + level.name + "'");
     }
     script.steps = root.integer("steps", 1, kMaxSteps);
     readCapture(root, script);
@@ -323,18 +336,21 @@ std::string tomlString(std::string_view text) {
 void writePlacement(std::ostream& out, const Placement& p) {
     out << "\n[[place]]\nkind = \"" << itemKindName(p.kind) << "\"\nposition = [" << scriptNumber(p.position.x) << ", "
         << scriptNumber(p.position.y) << "]\n";
-    if (p.angleDegrees != 0.0 || std::signbit(p.angleDegrees)) out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
+    if (p.angleDegrees != 0.0 || std::signbit(p.angleDegrees))
+        out << "angle = " << scriptNumber(p.angleDegrees) << '\n';
     if (!p.name.empty()) out << "name = " << tomlString(p.name) << '\n';
     for (const auto& [key, value] : p.ownKeys) out << key << " = " << value << '\n';
 }
 
 void writeAction(std::ostream& out, const Action& a) {
-    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind) << "\"\nitem = " << tomlString(a.item) << '\n';
+    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind)
+        << "\"\nitem = " << tomlString(a.item) << '\n';
     if (a.angle) out << "angle = " << scriptNumber(a.angleDegrees) << '\n';
     if (a.point) out << "point = [" << scriptNumber(a.point->x) << ", " << scriptNumber(a.point->y) << "]\n";
     if (!a.target.empty()) out << "target = " << tomlString(a.target) << '\n';
     // An aim at a point or item names its arc; one at an angle only when it was given one.
-    if (a.kind == ActionKind::aim && (!a.angle || a.highArc)) out << "arc = \"" << (a.highArc ? "high" : "low") << "\"\n";
+    if (a.kind == ActionKind::aim && (!a.angle || a.highArc))
+        out << "arc = \"" << (a.highArc ? "high" : "low") << "\"\n";
 }
 
 void writeExpectation(std::ostream& out, const Expectation& e) {

@@ -19,15 +19,15 @@ enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle, fire
 
 /// One action, taken when the run has taken `frame` steps (before the next one).
 struct Action {
-    std::int64_t frame = 0;        ///< steps taken before it happens
+    std::int64_t frame = 0; ///< steps taken before it happens
     ActionKind kind = ActionKind::fire;
-    std::string item;              ///< the cannon, bomb or switch it acts on, or the rope it cuts
-    std::optional<double> angle;   ///< rotate, aim: radians
-    double angleDegrees = 0.0;     ///< rotate, aim: the angle as the script wrote it, in degrees
-    std::optional<Vec2> point;     ///< aim: a point to hit
-    std::string target;            ///< aim: an item to hit (led when it moves); fire-when: the item to time the shot at
-    bool highArc = false;          ///< aim at a point or item: the lobbed arc
-    SourcePlace place;             ///< where the script wrote it
+    std::string item;            ///< the cannon, bomb or switch it acts on, or the rope it cuts
+    std::optional<double> angle; ///< rotate, aim: radians
+    double angleDegrees = 0.0;   ///< rotate, aim: the angle as the script wrote it, in degrees
+    std::optional<Vec2> point;   ///< aim: a point to hit
+    std::string target;          ///< aim: an item to hit (led when it moves); fire-when: the item to time the shot at
+    bool highArc = false;        ///< aim at a point or item: the lobbed arc
+    SourcePlace place;           ///< where the script wrote it
 };
 
 /// An assertion about the run: an event must happen before a frame.

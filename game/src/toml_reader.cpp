@@ -27,13 +27,12 @@ std::string_view typeName(const toml::node& node) {
     return "nothing";
 }
 
-bool NumberRange::contains(double value) const {
-    return (minExcluded ? value > min : value >= min) && value <= max;
-}
+bool NumberRange::contains(double value) const { return (minExcluded ? value > min : value >= min) && value <= max; }
 
 std::string NumberRange::describe() const {
     // A bound that excludes min says so: "between 0 and 100" would let 0 through.
-    if (std::isfinite(max) && minExcluded) return "greater than " + formatNumber(min) + " and at most " + formatNumber(max);
+    if (std::isfinite(max) && minExcluded)
+        return "greater than " + formatNumber(min) + " and at most " + formatNumber(max);
     if (std::isfinite(max)) return "between " + formatNumber(min) + " and " + formatNumber(max);
     return (minExcluded ? "greater than " : "at least ") + formatNumber(min);
 }
@@ -69,7 +68,8 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
     // Nor so large that squaring it (distances, energies) overflows: no scene needs more than a
     // billion of any unit, and 1e300 is a typo that would turn into infinities a few steps in.
     if (std::abs(value) > kMaxNumberMagnitude) {
-        diag.error(placeOf(node.source()), std::string(what) + " must be between -1e9 and 1e9, got " + formatNumber(value));
+        diag.error(placeOf(node.source()),
+                   std::string(what) + " must be between -1e9 and 1e9, got " + formatNumber(value));
         return std::nullopt;
     }
     return value;
@@ -85,7 +85,8 @@ TableReader::TableReader(const toml::table& table, std::string where, std::span<
         std::string message = "unknown key '" + std::string(name) + "' " + where_;
         const auto home = std::find_if(homes.begin(), homes.end(), [&](const KeyHome& h) { return h.key == name; });
         if (home != homes.end()) message += " (it belongs in " + std::string(home->home) + ")";
-        else if (const auto match = closestMatch(name, known)) message += " (did you mean '" + std::string(*match) + "'?)";
+        else if (const auto match = closestMatch(name, known))
+            message += " (did you mean '" + std::string(*match) + "'?)";
         else message += " (known keys: " + joinNames(known) + ")";
         diag_.error(placeOf(key.source()), std::move(message));
     }
@@ -100,7 +101,8 @@ void TableReader::error(SourcePlace place, std::string message) { diag_.error(pl
 
 const toml::node* TableReader::get(std::string_view key, Need need) {
     const toml::node* node = find(key);
-    if (!node && need == Need::required) error(tablePlace(), "missing required key '" + std::string(key) + "' " + where_);
+    if (!node && need == Need::required)
+        error(tablePlace(), "missing required key '" + std::string(key) + "' " + where_);
     return node;
 }
 
@@ -111,7 +113,8 @@ std::optional<double> TableReader::number(std::string_view key, NumberRange rang
     const auto value = readNumber(node, key, diag_);
     if (!value) return std::nullopt;
     if (!range.contains(*value)) {
-        error(placeOf(node.source()), std::string(key) + " must be " + range.describe() + ", got " + formatNumber(*value));
+        error(placeOf(node.source()),
+              std::string(key) + " must be " + range.describe() + ", got " + formatNumber(*value));
         return std::nullopt;
     }
     return value;
@@ -140,11 +143,13 @@ std::optional<Vec2> TableReader::vec2(std::string_view key, Need need) {
     const toml::node& node = *found;
     const auto* array = node.as_array();
     if (!array) {
-        error(placeOf(node.source()), std::string(key) + " must be an array [x, y], got " + std::string(typeName(node)));
+        error(placeOf(node.source()),
+              std::string(key) + " must be an array [x, y], got " + std::string(typeName(node)));
         return std::nullopt;
     }
     if (array->size() != 2) {
-        error(placeOf(node.source()), std::string(key) + " must hold 2 numbers [x, y], got " + std::to_string(array->size()));
+        error(placeOf(node.source()),
+              std::string(key) + " must hold 2 numbers [x, y], got " + std::to_string(array->size()));
         return std::nullopt;
     }
     const auto x = readNumber(*array->get(0), std::string(key) + "'s x", diag_);
@@ -156,7 +161,8 @@ std::optional<Vec2> TableReader::vec2(std::string_view key, Need need) {
 std::optional<Vec2> TableReader::vec2(std::string_view key, NumberRange range, Need need) {
     const auto value = vec2(key, need);
     if (value && (!range.contains(value->x) || !range.contains(value->y))) {
-        error(valuePlace(key), std::string(key) + "'s x and y must be " + range.describe() + ", got " + formatPair(value->x, value->y));
+        error(valuePlace(key),
+              std::string(key) + "'s x and y must be " + range.describe() + ", got " + formatPair(value->x, value->y));
         return std::nullopt;
     }
     return value;
@@ -167,7 +173,8 @@ std::optional<Vec2> TableReader::numberOrVec2(std::string_view key, NumberRange 
     if (!found) return std::nullopt;
     const toml::node& node = *found;
     if (!node.is_array() && !node.is_number()) {
-        error(placeOf(node.source()), std::string(key) + " must be a number or an array [x, y], got " + std::string(typeName(node)));
+        error(placeOf(node.source()),
+              std::string(key) + " must be a number or an array [x, y], got " + std::string(typeName(node)));
         return std::nullopt;
     }
     if (!node.is_array()) {
@@ -176,8 +183,8 @@ std::optional<Vec2> TableReader::numberOrVec2(std::string_view key, NumberRange 
     }
     const auto value = vec2(key);
     if (value && (!range.contains(value->x) || !range.contains(value->y))) {
-        error(placeOf(node.source()), std::string(key) + "'s x and y must be " + range.describe() + ", got " +
-                                          formatPair(value->x, value->y));
+        error(placeOf(node.source()),
+              std::string(key) + "'s x and y must be " + range.describe() + ", got " + formatPair(value->x, value->y));
         return std::nullopt;
     }
     return value;
@@ -207,7 +214,8 @@ std::optional<bool> TableReader::boolean(std::string_view key, Need need) {
     return value->get();
 }
 
-std::optional<std::size_t> TableReader::choice(std::string_view key, std::span<const std::string_view> names, Need need) {
+std::optional<std::size_t> TableReader::choice(std::string_view key, std::span<const std::string_view> names,
+                                               Need need) {
     const auto value = string(key, need);
     if (!value) return std::nullopt;
     const auto it = std::find(names.begin(), names.end(), *value);
@@ -223,7 +231,9 @@ const toml::table* TableReader::table(std::string_view key, std::string_view sha
     if (!found) return nullptr;
     const toml::node& node = *found;
     const auto* value = node.as_table();
-    if (!value) error(placeOf(node.source()), std::string(key) + " must be a table " + std::string(shape) + ", got " + std::string(typeName(node)));
+    if (!value)
+        error(placeOf(node.source()),
+              std::string(key) + " must be a table " + std::string(shape) + ", got " + std::string(typeName(node)));
     return value;
 }
 

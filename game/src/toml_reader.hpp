@@ -90,8 +90,8 @@ class TableReader {
 public:
     /// `where` ends the messages: "in [[circle]]", "in [world]", "at the top level". `unlisted` keys
     /// are accepted but not offered in "known keys" lists (the level additions to physics tables).
-    TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known,
-                Diagnostics& diag, std::span<const KeyHome> homes = {}, std::span<const std::string_view> unlisted = {});
+    TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known, Diagnostics& diag,
+                std::span<const KeyHome> homes = {}, std::span<const std::string_view> unlisted = {});
 
     /// The value under `key`, or null.
     const toml::node* find(std::string_view key) const { return table_.get(key); }
@@ -103,9 +103,11 @@ public:
     SourcePlace valuePlace(std::string_view key) const;
 
     /// A finite number within `range`.
-    std::optional<double> number(std::string_view key, NumberRange range = NumberRange::any(), Need need = Need::optional);
+    std::optional<double> number(std::string_view key, NumberRange range = NumberRange::any(),
+                                 Need need = Need::optional);
     /// A whole number within [min, max].
-    std::optional<std::int64_t> integer(std::string_view key, std::int64_t min, std::int64_t max, Need need = Need::optional);
+    std::optional<std::int64_t> integer(std::string_view key, std::int64_t min, std::int64_t max,
+                                        Need need = Need::optional);
     /// An [x, y] pair of finite numbers.
     std::optional<Vec2> vec2(std::string_view key, Need need = Need::optional);
     /// As vec2, and both coordinates must lie in `range` (NumberRange::coordinate() for positions).
@@ -117,7 +119,8 @@ public:
     /// true or false.
     std::optional<bool> boolean(std::string_view key, Need need = Need::optional);
     /// A string that must be one of `names`; returns its index in `names`.
-    std::optional<std::size_t> choice(std::string_view key, std::span<const std::string_view> names, Need need = Need::optional);
+    std::optional<std::size_t> choice(std::string_view key, std::span<const std::string_view> names,
+                                      Need need = Need::optional);
     /// A nested table such as `bounds = { min = [..], max = [..] }`; `shape` shows how to write it.
     const toml::table* table(std::string_view key, std::string_view shape, Need need = Need::optional);
     /// The tables of an array of tables such as [[circle]]; none when the key is absent.

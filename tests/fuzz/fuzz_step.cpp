@@ -1,9 +1,9 @@
 // libFuzzer target: a step of a random scene. The bytes choose a method (all five) and up to eight
 // balls (position, radius, mass, velocity up to 200 m/s, bounciness, friction, spin), up to three
 // segments inside a closed box, up to three rigid bodies (blocks; turning boxes, capsules and pivots
-// under solver and auto), ropes, water, a fan, a magnet, a thruster and a kinematic circle; the world then steps 60 times, a circle or
-// segment removed and a rigid body disabled at step 20 (enabled again at 40) when the bytes say so. It must never produce a NaN or an
-// infinity, and never do more work in a step than the event cap allows.
+// under solver and auto), ropes, water, a fan, a magnet, a thruster and a kinematic circle; the world then steps 60
+// times, a circle or segment removed and a rigid body disabled at step 20 (enabled again at 40) when the bytes say so.
+// It must never produce a NaN or an infinity, and never do more work in a step than the event cap allows.
 #include "rube/physics/world.hpp"
 
 #include <cstddef>
@@ -25,7 +25,8 @@ private:
     std::size_t pos_ = 0;
 };
 
-constexpr rube::Method kMethods[] = {rube::Method::discrete, rube::Method::turnBased, rube::Method::exact, rube::Method::solver, rube::Method::automatic};
+constexpr rube::Method kMethods[] = {rube::Method::discrete, rube::Method::turnBased, rube::Method::exact,
+                                     rube::Method::solver, rube::Method::automatic};
 
 } // namespace
 
@@ -39,7 +40,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     def.bounds = {{-10.0, -10.0}, {10.0, 10.0}};
     World world(def);
     const Vec2 corners[] = {{-5, -5}, {5, -5}, {5, 5}, {-5, 5}};
-    for (int i = 0; i < 4; ++i) world.addSegment({corners[i], corners[(i + 1) % 4], bytes.in(0.0, 0.2), {bytes.in(0.0, 1.0), bytes.in(0.0, 1.0)}, -1});
+    for (int i = 0; i < 4; ++i)
+        world.addSegment(
+            {corners[i], corners[(i + 1) % 4], bytes.in(0.0, 0.2), {bytes.in(0.0, 1.0), bytes.in(0.0, 1.0)}, -1});
     const int segments = bytes.byte() % 4;
     for (int i = 0; i < segments; ++i) {
         const Vec2 a{bytes.in(-4.5, 4.5), bytes.in(-4.5, 4.5)};
@@ -75,7 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         body.material = {bytes.in(0.0, 1.0), bytes.in(0.0, 1.0)};
         const BodyId index = world.addBody(body);
         if (turning && bytes.byte() % 3 == 0)
-            world.addPivot({index, {bytes.in(-0.5, 0.5), 0.0}, body.position + Vec2{bytes.in(-0.5, 0.5), bytes.in(-0.5, 0.5)}});
+            world.addPivot(
+                {index, {bytes.in(-0.5, 0.5), 0.0}, body.position + Vec2{bytes.in(-0.5, 0.5), bytes.in(-0.5, 0.5)}});
     }
     const int circles = static_cast<int>(world.circles().size());
     for (int i = 0, ropes = bytes.byte() % 3; i < ropes && circles > 0; ++i) {
@@ -86,10 +90,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         world.addRope(rope);
     }
     const std::uint8_t fields = bytes.byte();
-    if (fields & 1) world.fields().waters.push_back({{-5.0, -5.0}, {5.0, bytes.in(-5.0, 5.0)}, bytes.in(1.0, 5000.0), bytes.in(0.0, 5000.0)});
-    if (fields & 2) world.fields().winds.push_back({{bytes.in(-5.0, 5.0), -5.0}, {0.0, 1.0}, 10.0, bytes.in(0.5, 5.0), bytes.in(0.0, 50.0), bytes.in(0.0, 50.0), true});
-    if (fields & 4) world.fields().magnets.push_back({{bytes.in(-4.0, 4.0), bytes.in(-4.0, 4.0)}, bytes.in(0.0, 500.0), 0.1, 1e9, true});
-    if ((fields & 8) && circles > 0) world.fields().thrusters.push_back({world.circleId(bytes.byte() % circles), {bytes.in(-500.0, 500.0), bytes.in(-500.0, 500.0)}, 0.0, 0.5});
+    if (fields & 1)
+        world.fields().waters.push_back(
+            {{-5.0, -5.0}, {5.0, bytes.in(-5.0, 5.0)}, bytes.in(1.0, 5000.0), bytes.in(0.0, 5000.0)});
+    if (fields & 2)
+        world.fields().winds.push_back({{bytes.in(-5.0, 5.0), -5.0},
+                                        {0.0, 1.0},
+                                        10.0,
+                                        bytes.in(0.5, 5.0),
+                                        bytes.in(0.0, 50.0),
+                                        bytes.in(0.0, 50.0),
+                                        true});
+    if (fields & 4)
+        world.fields().magnets.push_back(
+            {{bytes.in(-4.0, 4.0), bytes.in(-4.0, 4.0)}, bytes.in(0.0, 500.0), 0.1, 1e9, true});
+    if ((fields & 8) && circles > 0)
+        world.fields().thrusters.push_back(
+            {world.circleId(bytes.byte() % circles), {bytes.in(-500.0, 500.0), bytes.in(-500.0, 500.0)}, 0.0, 0.5});
     if (fields & 16) {
         KinematicPath path;
         path.loop = true;
@@ -106,8 +123,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     BodyId disabled;
     for (int step = 0; step < 60; ++step) {
         if (step == 20) {
-            if ((edits & 1) && !world.circles().empty()) world.remove(world.circleId(which % static_cast<int>(world.circles().size())));
-            if ((edits & 2) && !world.segments().empty()) world.remove(world.segmentId(which % static_cast<int>(world.segments().size())));
+            if ((edits & 1) && !world.circles().empty())
+                world.remove(world.circleId(which % static_cast<int>(world.circles().size())));
+            if ((edits & 2) && !world.segments().empty())
+                world.remove(world.segmentId(which % static_cast<int>(world.segments().size())));
             if ((edits & 4) && !world.bodies().empty()) {
                 disabled = world.bodyId(which % static_cast<int>(world.bodies().size()));
                 world.setEnabled(disabled, false);

@@ -55,7 +55,8 @@ TEST_CASE("game/items.md is what the descriptors write", "[parts][catalogue]") {
         heading.append(kind->name()).append("\n");
         CHECK(generated.find(heading) != std::string::npos);
         for (const PartKey& key : kind->keys())
-            if (key.key != "kind") CHECK(generated.find(std::string("`").append(key.key).append("`")) != std::string::npos);
+            if (key.key != "kind")
+                CHECK(generated.find(std::string("`").append(key.key).append("`")) != std::string::npos);
     }
 }
 
@@ -81,7 +82,8 @@ TEST_CASE("each kind's summary states radii, masses, lengths and bounciness its 
         CAPTURE(kind->name(), summary);
         const ItemBodies bodies = kind->bodies(kind->make({0.0, 0.0}));
         for (const double r : numbersBefore(summary, R"(radius ([0-9.]+) m)")) {
-            CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(), [&](const CircleDef& c) { return near(c.radius, r); }));
+            CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(),
+                              [&](const CircleDef& c) { return near(c.radius, r); }));
             ++checked;
         }
         for (const double m : numbersBefore(summary, R"(([0-9.]+) kg)")) {
@@ -114,7 +116,8 @@ TEST_CASE("the printed catalogue names every kind and key with its default", "[p
         REQUIRE(at != std::string::npos);
         CHECK(text.find("  as made: " + partDefaults(kind), at) != std::string::npos);
         for (const PartKey& key : kind->keys())
-            if (key.key != "kind") CHECK(text.find(std::string("  ").append(key.key).append(" "), at) != std::string::npos);
+            if (key.key != "kind")
+                CHECK(text.find(std::string("  ").append(key.key).append(" "), at) != std::string::npos);
     }
 }
 
@@ -131,7 +134,8 @@ TEST_CASE("a radius or length key's written default is the size the kind's defau
             const double value = std::strtod(text.c_str(), &end);
             REQUIRE(end == text.c_str() + text.size());
             if (key.key == "radius")
-                CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(), [&](const CircleDef& c) { return near(c.radius, value); }));
+                CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(),
+                                  [&](const CircleDef& c) { return near(c.radius, value); }));
             else
                 CHECK(std::any_of(bodies.segments.begin(), bodies.segments.end(),
                                   [&](const SegmentDef& s) { return near((s.b - s.a).length(), value); }));

@@ -47,7 +47,9 @@ SceneDesc level() {
     return *load.scene;
 }
 
-ScriptLoad script(const std::string& body) { return parseScript("level = \"kit\"\n" + body, "kit.solution.toml", level()); }
+ScriptLoad script(const std::string& body) {
+    return parseScript("level = \"kit\"\n" + body, "kit.solution.toml", level());
+}
 
 std::string firstError(const ScriptLoad& load) { return load.errors.empty() ? "" : load.errors.front().format(); }
 
@@ -56,7 +58,8 @@ std::string firstError(const ScriptLoad& load) { return load.errors.empty() ? ""
 TEST_CASE("a placed plank is as long as its length key says, and the zone judges that length", "[parts][place]") {
     for (const double length : {0.5, 1.0, 2.0, 3.3, 5.8, 5.95, 6.2, 9.0}) {
         CAPTURE(length);
-        const ScriptLoad load = script("[[place]]\nkind = \"plank\"\nposition = [0, 3]\nlength = " + std::to_string(length) + "\n");
+        const ScriptLoad load = script(
+            "[[place]]\nkind = \"plank\"\nposition = [0, 3]\nlength = " + std::to_string(length) + "\n");
         // The board's capsule is length + 2 x 0.05 m end to end: it fits the 6 m zone while that is at most 6.
         const bool fits = length + 0.1 <= 6.0;
         CHECK(load.script.has_value() == fits);
@@ -74,12 +77,13 @@ TEST_CASE("a placed plank is as long as its length key says, and the zone judges
 TEST_CASE("a placed part's keys are read by its kind: unknown keys, ranges and rules are refused", "[parts][place]") {
     CHECK(firstError(script("[[place]]\nkind = \"plank\"\nposition = [0, 3]\nlenght = 1\n"))
               .find("unknown key 'lenght' in [[place]] (did you mean 'length'?)") != std::string::npos);
-    CHECK(firstError(script("[[place]]\nkind = \"plank\"\nposition = [0, 3]\nlength = -1\n")).find("length") != std::string::npos);
+    CHECK(firstError(script("[[place]]\nkind = \"plank\"\nposition = [0, 3]\nlength = -1\n")).find("length") !=
+          std::string::npos);
     CHECK(firstError(script("[[place]]\nkind = \"bomb\"\nposition = [0, 3]\ntrigger = \"timer\"\n"))
               .find("a bomb with trigger 'timer' needs fuse = seconds") != std::string::npos);
     // A key of another kind is not this kind's: a heavy ball has no length.
-    CHECK(firstError(script("[[place]]\nkind = \"heavy\"\nposition = [0, 3]\nlength = 1\n")).find("unknown key 'length'") !=
-          std::string::npos);
+    CHECK(firstError(script("[[place]]\nkind = \"heavy\"\nposition = [0, 3]\nlength = 1\n"))
+              .find("unknown key 'length'") != std::string::npos);
     // A name is new: it may not repeat a level item's or an earlier placement's.
     CHECK(firstError(script("[[place]]\nkind = \"heavy\"\nposition = [0, 3]\nname = \"post\"\n"))
               .find("name 'post' is taken by an item of level 'kit'") != std::string::npos);
@@ -91,16 +95,20 @@ TEST_CASE("a placed part's keys are read by its kind: unknown keys, ranges and r
 TEST_CASE("a placed bomb named by the script is detonated by name, at the action's step", "[parts][place]") {
     for (const int frame : {1, 7, 40}) {
         CAPTURE(frame);
-        const ScriptLoad load = script("[[place]]\nkind = \"bomb\"\nposition = [0, 1]\nname = \"mine\"\ntrigger = \"switch\"\n"
-                                       "[[action]]\nframe = " + std::to_string(frame) + "\ndo = \"detonate\"\nitem = \"mine\"\n"
-                                       "[[expect]]\nexplosion = \"mine\"\nbefore_frame = 100\n");
+        const ScriptLoad load = script(
+            "[[place]]\nkind = \"bomb\"\nposition = [0, 1]\nname = \"mine\"\ntrigger = \"switch\"\n"
+            "[[action]]\nframe = " +
+            std::to_string(frame) +
+            "\ndo = \"detonate\"\nitem = \"mine\"\n"
+            "[[expect]]\nexplosion = \"mine\"\nbefore_frame = 100\n");
         INFO(firstError(load));
         REQUIRE(load.script);
         const ScriptDesc& s = *load.script;
         LevelRun run(level(), s.placements);
         std::size_t next = 0;
         for (int step = 0; step < 60; ++step) {
-            for (; next < s.actions.size() && s.actions[next].frame == step; ++next) CHECK(takeAction(s.actions[next], run).empty());
+            for (; next < s.actions.size() && s.actions[next].frame == step; ++next)
+                CHECK(takeAction(s.actions[next], run).empty());
             run.step();
         }
         int explosions = 0;
@@ -119,8 +127,9 @@ TEST_CASE("a placed bomb named by the script is detonated by name, at the action
 }
 
 TEST_CASE("a script writes a placement's own keys back as it read them", "[parts][place]") {
-    const std::string body = "[[place]]\nkind = \"bomb\"\nposition = [0, 1]\nname = \"mine\"\ntrigger = \"timer\"\nfuse = 1.5\n"
-                             "[[place]]\nkind = \"plank\"\nposition = [0, 3]\nangle = 10\nlength = 2.5\n";
+    const std::string body =
+        "[[place]]\nkind = \"bomb\"\nposition = [0, 1]\nname = \"mine\"\ntrigger = \"timer\"\nfuse = 1.5\n"
+        "[[place]]\nkind = \"plank\"\nposition = [0, 3]\nangle = 10\nlength = 2.5\n";
     const ScriptLoad first = script(body);
     INFO(firstError(first));
     REQUIRE(first.script);
@@ -133,5 +142,6 @@ TEST_CASE("a script writes a placement's own keys back as it read them", "[parts
     REQUIRE(again.script);
     CHECK(writeScript(*again.script) == written);
     const ItemDesc plank = placedItem(again.script->placements[1]);
-    CHECK(std::abs((plank.kind->bodies(plank).segments[0].b - plank.kind->bodies(plank).segments[0].a).length() - 2.5) < 1e-12);
+    CHECK(std::abs((plank.kind->bodies(plank).segments[0].b - plank.kind->bodies(plank).segments[0].a).length() - 2.5) <
+          1e-12);
 }

@@ -97,7 +97,8 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     needs_.assign(static_cast<std::size_t>(nodeCount), 0);
     order_.clear();
     frictionShared_.clear();
-    for (int i = 0; i < nodeCount; ++i) parent_[static_cast<std::size_t>(i)] = looseParent_[static_cast<std::size_t>(i)] = i;
+    for (int i = 0; i < nodeCount; ++i)
+        parent_[static_cast<std::size_t>(i)] = looseParent_[static_cast<std::size_t>(i)] = i;
 
     for (int i = 0; i < circleCount; ++i) {
         const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
@@ -156,7 +157,8 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     if (order_.size() > 1) {
         const double cellSize = std::max(kCellPerSpan * spanSum / static_cast<double>(order_.size()), 1e-9);
         // Within the world's bounds: escaped bodies are clamped into the grid's border cells.
-        const BoundingBox bounds{ctx.def.bounds.min - Vec2{cellSize, cellSize}, ctx.def.bounds.max + Vec2{cellSize, cellSize}};
+        const BoundingBox bounds{ctx.def.bounds.min - Vec2{cellSize, cellSize},
+                                 ctx.def.bounds.max + Vec2{cellSize, cellSize}};
         const BoundingBox clipped{{std::max(region.min.x, bounds.min.x), std::max(region.min.y, bounds.min.y)},
                                   {std::min(region.max.x, bounds.max.x), std::min(region.max.y, bounds.max.y)}};
         if (clipped.min.x <= clipped.max.x && clipped.min.y <= clipped.max.y) region = clipped;
@@ -171,7 +173,8 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         grid_.build(looseBoxes_, {}, region, cellSize, 4 * static_cast<int>(order_.size()) + 64);
         grid_.findPairs(looseBoxes_, {}, looks_, pairs_);
         for (const CandidatePair& pair : pairs_) {
-            const int a = order_[static_cast<std::size_t>(pair.circle)], b = order_[static_cast<std::size_t>(pair.other)];
+            const int a = order_[static_cast<std::size_t>(pair.circle)],
+                      b = order_[static_cast<std::size_t>(pair.other)];
             join(looseParent_, a, b);
             if (boxes_[static_cast<std::size_t>(a)].overlaps(boxes_[static_cast<std::size_t>(b)])) join(parent_, a, b);
         }
@@ -195,7 +198,8 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     for (int i = 0; i < circleCount; ++i) {
         if (!friction_[static_cast<std::size_t>(i)]) continue;
         const BoundingBox& box = boxes_[static_cast<std::size_t>(i)];
-        if (std::any_of(frictionShared_.begin(), frictionShared_.end(), [&](const BoundingBox& s) { return s.overlaps(box); }))
+        if (std::any_of(frictionShared_.begin(), frictionShared_.end(),
+                        [&](const BoundingBox& s) { return s.overlaps(box); }))
             needs_[static_cast<std::size_t>(i)] = 1;
     }
 
@@ -219,7 +223,8 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         const auto k = static_cast<std::size_t>(islandOf_[static_cast<std::size_t>(n)]);
         Island& island = islands_[k];
         ++island.count;
-        const bool dynamic = n < circleCount || ctx.bodies[static_cast<std::size_t>(n - circleCount)].motion == Motion::dynamic;
+        const bool dynamic = n < circleCount ||
+                             ctx.bodies[static_cast<std::size_t>(n - circleCount)].motion == Motion::dynamic;
         if (dynamic) ++island.dynamicBodies;
         if (needs_[static_cast<std::size_t>(n)]) island.needsSolver = true;
         if (friction_[static_cast<std::size_t>(n)] && ++frictionCircles_[k] > 1) island.needsSolver = true;

@@ -21,11 +21,12 @@ namespace rube {
 
 /// One island, with what auto needs to choose its method.
 struct Island {
-    int first = 0;            ///< its first node in AutoIslands::members(), which lists each island's nodes in index order
-    int count = 0;            ///< how many nodes
-    int dynamicBodies = 0;    ///< dynamic circles and dynamic rigid bodies in it
-    bool needsSolver = false; ///< friction can act in it, or it holds a turning body, a pivot or a moving non-block body
-    int neighbourhood = 0;    ///< islands with equal values are within a body's size of each other (a crowd forming)
+    int first = 0;         ///< its first node in AutoIslands::members(), which lists each island's nodes in index order
+    int count = 0;         ///< how many nodes
+    int dynamicBodies = 0; ///< dynamic circles and dynamic rigid bodies in it
+    bool needsSolver =
+        false;             ///< friction can act in it, or it holds a turning body, a pivot or a moving non-block body
+    int neighbourhood = 0; ///< islands with equal values are within a body's size of each other (a crowd forming)
 };
 
 /// Groups the step's bodies into islands. Nodes: dynamic circle i is node i, rigid body b is node
@@ -39,7 +40,8 @@ public:
     std::span<const Island> islands() const { return islands_; }
     /// The nodes of `island`, in index order.
     std::span<const int> members(const Island& island) const {
-        return std::span<const int>(members_).subspan(static_cast<std::size_t>(island.first), static_cast<std::size_t>(island.count));
+        return std::span<const int>(members_).subspan(static_cast<std::size_t>(island.first),
+                                                      static_cast<std::size_t>(island.count));
     }
     /// The island of `node`, or -1 for a non-dynamic circle.
     int islandOf(int node) const { return islandOf_[static_cast<std::size_t>(node)]; }
@@ -48,21 +50,21 @@ private:
     static int find(std::vector<int>& parent, int node);
     static void join(std::vector<int>& parent, int a, int b);
 
-    std::vector<int> parent_;   // union-find over islands, the root is the lowest index
-    std::vector<int> looseParent_; // union-find over neighbourhoods
-    std::vector<double> sizes_; // per node: its radius (a circle) or bounding radius (a rigid body)
+    std::vector<int> parent_;        // union-find over islands, the root is the lowest index
+    std::vector<int> looseParent_;   // union-find over neighbourhoods
+    std::vector<double> sizes_;      // per node: its radius (a circle) or bounding radius (a rigid body)
     std::vector<BoundingBox> boxes_; // per node: its reach box (unused for non-dynamic circles)
     std::vector<std::uint8_t> isNode_;
-    std::vector<std::uint8_t> friction_;   // per node: a dynamic circle with friction
-    std::vector<std::uint8_t> needs_;      // per node: needs the solver by itself
-    std::vector<int> order_;    // the nodes, in index order (the grid's items)
+    std::vector<std::uint8_t> friction_;  // per node: a dynamic circle with friction
+    std::vector<std::uint8_t> needs_;     // per node: needs the solver by itself
+    std::vector<int> order_;              // the nodes, in index order (the grid's items)
     std::vector<BoundingBox> looseBoxes_; // per grid item: its neighbourhood box
     std::vector<std::uint8_t> looks_;     // per grid item: it looks for pairs (asleep circles do not)
     std::vector<CandidatePair> pairs_;
     BroadphaseGrid grid_;
     std::vector<BoundingBox> frictionShared_; // swept boxes of shared shapes with friction
-    std::vector<int> frictionCircles_; // per island: dynamic circles with friction
-    std::vector<std::uint8_t> nonBlocks_; // per island: holds a body exact does not model
+    std::vector<int> frictionCircles_;        // per island: dynamic circles with friction
+    std::vector<std::uint8_t> nonBlocks_;     // per island: holds a body exact does not model
     std::vector<Island> islands_;
     std::vector<int> members_;
     std::vector<int> islandOf_;

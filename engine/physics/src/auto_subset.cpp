@@ -26,7 +26,9 @@ void StepSubset::gather(const StepContext& world, std::span<const std::uint8_t> 
         bodies_.push_back(world.bodies[b]);
     }
     for (const Pivot& p : world.pivots) {
-        if (p.body < 0 || static_cast<std::size_t>(p.body) >= bodyInverse_.size() || bodyInverse_[static_cast<std::size_t>(p.body)] < 0) continue;
+        if (p.body < 0 || static_cast<std::size_t>(p.body) >= bodyInverse_.size() ||
+            bodyInverse_[static_cast<std::size_t>(p.body)] < 0)
+            continue;
         Pivot copy = p;
         copy.body = bodyInverse_[static_cast<std::size_t>(p.body)];
         pivots_.push_back(copy);
@@ -43,7 +45,8 @@ void StepSubset::gather(const StepContext& world, std::span<const std::uint8_t> 
 }
 
 StepContext StepSubset::context(const StepContext& world, const WorldDef& def) {
-    StepContext sub{def, circles_, world.segments, bodies_, world.time, world.restingSpeed, world.impacts, world.stats, pivots_, world.ropes};
+    StepContext sub{def,           circles_,    world.segments, bodies_,    world.time, world.restingSpeed,
+                    world.impacts, world.stats, pivots_,        world.ropes};
     sub.sleep = world.sleep;
     return sub;
 }
@@ -51,7 +54,8 @@ StepContext StepSubset::context(const StepContext& world, const WorldDef& def) {
 void StepSubset::scatter(StepContext& world, bool shared, std::size_t firstImpact) {
     for (std::size_t k = 0; k < circles_.size(); ++k) {
         Circle& c = circles_[k];
-        if (c.sleep.asleep && c.sleep.island >= 0) c.sleep.island = circleMap_[static_cast<std::size_t>(c.sleep.island)];
+        if (c.sleep.asleep && c.sleep.island >= 0)
+            c.sleep.island = circleMap_[static_cast<std::size_t>(c.sleep.island)];
         if (c.motion == Motion::dynamic || shared) world.circles[static_cast<std::size_t>(circleMap_[k])] = c;
     }
     for (std::size_t k = 0; k < bodies_.size(); ++k) world.bodies[static_cast<std::size_t>(bodyMap_[k])] = bodies_[k];

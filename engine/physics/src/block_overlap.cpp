@@ -12,7 +12,8 @@ namespace {
 // +1 or -1 by the sign of x; +1 for zero, so a push-back from a coincident centre is still defined.
 double sideOf(double x) { return x < 0.0 ? -1.0 : 1.0; }
 
-// The sign of x, 0 for zero: picks the block's corner (or, for an axis-aligned line, the middle of its side) nearest a line.
+// The sign of x, 0 for zero: picks the block's corner (or, for an axis-aligned line, the middle of its side) nearest a
+// line.
 double signOrZero(double x) { return x < 0.0 ? -1.0 : (x > 0.0 ? 1.0 : 0.0); }
 
 } // namespace

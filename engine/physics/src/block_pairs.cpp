@@ -14,9 +14,8 @@ namespace {
 bool isDynamic(Motion m) { return m == Motion::dynamic; }
 
 bool isResting(std::span<const BlockPair> resting, int block, Other kind, int other) {
-    return std::any_of(resting.begin(), resting.end(), [&](const BlockPair& p) {
-        return p.block == block && p.kind == kind && p.other == other;
-    });
+    return std::any_of(resting.begin(), resting.end(),
+                       [&](const BlockPair& p) { return p.block == block && p.kind == kind && p.other == other; });
 }
 
 } // namespace
@@ -31,7 +30,9 @@ BlockEvent earliestBlockImpact(const StepContext& ctx, int i, const BlockSearch&
             best = BlockEvent{hit->timeOfImpact, i, kind, other, hit->normal, hit->contactPoint};
     };
     // A held-still other (turn-based) contributes no velocity unless a script moves it.
-    const auto otherVelocity = [&](Vec2 v, Motion m) { return search.othersStandStill && m != Motion::kinematic ? Vec2{} : v; };
+    const auto otherVelocity = [&](Vec2 v, Motion m) {
+        return search.othersStandStill && m != Motion::kinematic ? Vec2{} : v;
+    };
     if (dynamic) {
         // Only a dynamic block can hit a segment: both others have infinite mass.
         for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {

@@ -35,10 +35,10 @@ struct BlockPair {
 /// How a method searches: the exact method moves bodies on parabolas (acceleration = gravity) and
 /// visits each pair once; turn-based moves one body while the others stand still (unless scripted).
 struct BlockSearch {
-    Vec2 gravity;                    ///< the dynamic bodies' acceleration during the search (zero for turn-based)
-    double horizon = 0.0;            ///< step time left, s
-    bool eachPairOnce = true;        ///< block pairs only from the lower index
-    bool othersStandStill = false;   ///< dynamic others are held still (turn-based); kinematic ones still move
+    Vec2 gravity;                       ///< the dynamic bodies' acceleration during the search (zero for turn-based)
+    double horizon = 0.0;               ///< step time left, s
+    bool eachPairOnce = true;           ///< block pairs only from the lower index
+    bool othersStandStill = false;      ///< dynamic others are held still (turn-based); kinematic ones still move
     std::span<const BlockPair> resting; ///< pairs left out
 };
 

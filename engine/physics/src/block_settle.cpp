@@ -24,7 +24,7 @@ struct BlockContact {
     int block = -1;
     Other kind = Other::body;
     int other = -1;
-    Vec2 side;           ///< a segment face's side
+    Vec2 side; ///< a segment face's side
 };
 
 // What a block overlaps of its partner now; nothing when they do not.
@@ -54,8 +54,8 @@ double separate(StepContext& ctx, int i, Other kind, int other, const Overlap& o
                                                : Vec2{};
     Vec2 otherVelocity = partner.velocity;
     pushApart(b.position, inverseMassBlock, otherPosition, inverseMassOther, overlap.normal, overlap.depth);
-    const double approach = resolveImpact(b.velocity, inverseMassBlock, otherVelocity, inverseMassOther,
-                                          overlap.normal, bounciness);
+    const double approach = resolveImpact(b.velocity, inverseMassBlock, otherVelocity, inverseMassOther, overlap.normal,
+                                          bounciness);
     if (partner.dynamic && kind == Other::circle) {
         ctx.circles[other].position = otherPosition;
         ctx.circles[other].velocity = otherVelocity;
@@ -103,8 +103,8 @@ int separateBlockOverlaps(StepContext& ctx, std::span<const Vec2> startCentres, 
             const double approach = separate(ctx, i, kind, other, *overlap, b.inverseMass, partner.inverseMass,
                                              pairBounciness(b.material, partner.material));
             const Other reported = kind == Other::segment && overlap->normal != side ? Other::segmentCap : kind;
-            ctx.impacts.push_back(Impact{-1, reported, other, time, overlap->point, overlap->normal,
-                                         std::max(approach, 0.0), i});
+            ctx.impacts.push_back(
+                Impact{-1, reported, other, time, overlap->point, overlap->normal, std::max(approach, 0.0), i});
             ++ctx.stats.impacts;
             ++count;
         });

@@ -130,8 +130,8 @@ std::optional<Collision> blockSegmentCollision(const BlockMotion& block, Vec2 a,
     if (length > 0.0) {
         const Vec2 lineNormal = line.normal();
         const Vec2 side = (block.centre - a).dot(lineNormal) < 0.0 ? -lineNormal : lineNormal;
-        if (const auto overlap =
-                blockSegmentOverlapOnSide(block.centre, block.halfExtents, a, b, segmentRadius, side)) {
+        if (const auto overlap = blockSegmentOverlapOnSide(block.centre, block.halfExtents, a, b, segmentRadius,
+                                                           side)) {
             if (!approachingAlong(block, overlap->normal)) return std::nullopt;
             return Collision{0.0, block.centre, overlap->normal, overlap->point, false};
         }
@@ -146,7 +146,8 @@ std::optional<Collision> blockSegmentCollision(const BlockMotion& block, Vec2 a,
             const auto t = gapTime(gap, block.velocity.dot(n), block.acceleration.dot(n), horizon);
             if (!t || (face && face->timeOfImpact <= *t)) continue;
             const Vec2 poi = block.at(*t);
-            const Vec2 corner = poi + Vec2{-block.halfExtents.x * signOrZero(n.x), -block.halfExtents.y * signOrZero(n.y)};
+            const Vec2 corner = poi +
+                                Vec2{-block.halfExtents.x * signOrZero(n.x), -block.halfExtents.y * signOrZero(n.y)};
             // The corner's distance along the line, by scalar projection: past the ends the caps decide.
             const double along = (corner - a).dot(line) / length;
             if (along < 0.0 || along > length) continue;

@@ -65,8 +65,8 @@ bool BroadphaseGrid::firstVisit(std::vector<int>& stamps, int k, int stamp) {
     return true;
 }
 
-void BroadphaseGrid::build(std::span<const BoundingBox> filingBoxes, std::span<const SweptSegment> segments, BoundingBox region,
-                           double cellSize, int maxCells) {
+void BroadphaseGrid::build(std::span<const BoundingBox> filingBoxes, std::span<const SweptSegment> segments,
+                           BoundingBox region, double cellSize, int maxCells) {
     const double w = std::max(region.max.x - region.min.x, 0.0);
     const double h = std::max(region.max.y - region.min.y, 0.0);
     // Start no smaller than what maxCells allows, then grow until the ceilings fit too.
@@ -207,7 +207,8 @@ void BroadphaseGrid::findPairs(std::span<const BoundingBox> circleBoxes, std::sp
     }
 }
 
-bool BroadphaseGrid::query(const BoundingBox& box, int maxCellsPerAxis, std::vector<int>& circles, std::vector<int>& segments) {
+bool BroadphaseGrid::query(const BoundingBox& box, int maxCellsPerAxis, std::vector<int>& circles,
+                           std::vector<int>& segments) {
     circles.clear();
     segments.clear();
     // Outside the grid, shapes were clipped away when filed: the caller must look at all of them.

@@ -84,13 +84,13 @@ private:
     double invCellSize_ = 1.0;
     int nx_ = 1;
     int ny_ = 1;
-    BoundingBox bounds_;                                  // the grid's extent
-    CellTable small_;                             // circles whose box fits a cell: by centre, once
-    CellTable large_;                             // larger circles: every cell their box covers
-    CellTable segments_;                          // segments: every cell their swept capsule crosses
-    std::vector<std::uint8_t> isSmall_;           // per circle
-    std::vector<int> homeCell_;                   // per circle: its centre's cell
-    std::vector<std::uint32_t> entryCells_;       // scratch: (cell, item) entries before sorting
+    BoundingBox bounds_;                    // the grid's extent
+    CellTable small_;                       // circles whose box fits a cell: by centre, once
+    CellTable large_;                       // larger circles: every cell their box covers
+    CellTable segments_;                    // segments: every cell their swept capsule crosses
+    std::vector<std::uint8_t> isSmall_;     // per circle
+    std::vector<int> homeCell_;             // per circle: its centre's cell
+    std::vector<std::uint32_t> entryCells_; // scratch: (cell, item) entries before sorting
     std::vector<int> entryItems_;
     std::vector<int> circleStamp_, segmentStamp_; // last query that saw the item, to report it once
     int stamp_ = 0;

@@ -17,9 +17,7 @@ std::optional<Overlap> circleCircleOverlap(Vec2 c1, double r1, Vec2 c2, double r
     return Overlap{normal, radiusSum - dist, c2 + normal * r2};
 }
 
-std::optional<Overlap> circlePointOverlap(Vec2 c, double r, Vec2 p) {
-    return circleCircleOverlap(c, r, p, 0.0);
-}
+std::optional<Overlap> circlePointOverlap(Vec2 c, double r, Vec2 p) { return circleCircleOverlap(c, r, p, 0.0); }
 
 Vec2 closestPointOnSegment(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 ab = b - a;
@@ -40,7 +38,10 @@ std::optional<Overlap> circleSegmentOverlap(Vec2 c, double r, Vec2 a, Vec2 b, do
     // circle's side so the segment is two-sided (lecture 5, "two segments with opposite normals").
     Vec2 n = ab.normal();
     double dist = (c - a).dot(n);
-    if (dist < 0.0) { n = -n; dist = -dist; }
+    if (dist < 0.0) {
+        n = -n;
+        dist = -dist;
+    }
     const double reach = r + segmentRadius;
     if (dist >= reach) return std::nullopt;
     return Overlap{n, reach - dist, c - n * (dist - segmentRadius)};

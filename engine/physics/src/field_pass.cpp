@@ -39,7 +39,9 @@ Vec2 quadraticDragKick(Vec2 v, double k, double dt) { return v / (1.0 + k * v.le
 Vec2 windKick(Vec2 v, Vec2 air, double k, double dt) { return (v - air) * std::expm1(-k * dt); }
 
 // The part of [start, end) that lies within [t0, t1): how long a thruster burns during the step.
-double overlap(double start, double end, double t0, double t1) { return std::max(0.0, std::min(end, t1) - std::max(start, t0)); }
+double overlap(double start, double end, double t0, double t1) {
+    return std::max(0.0, std::min(end, t1) - std::max(start, t0));
+}
 
 // Buoyancy and water drag on one circle in one pool, as a change of velocity over dt.
 Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
@@ -76,14 +78,16 @@ Vec2 magnetForce(const Magnet& magnet, Vec2 position) {
     return d * (magnet.strength / (clamped * clamped * distance));
 }
 
-void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots, const AirDrag& airDrag,
-                 Vec2 gravity, double time, double dt) {
+void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots,
+                 const AirDrag& airDrag, Vec2 gravity, double time, double dt) {
     for (Circle& c : circles) {
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double width = 2.0 * c.radius;
         Vec2 kick;
-        if (airDrag.linear > 0.0) kick += linearDragKick(c.velocity, gravity, airDrag.linearRate(c.radius, c.inverseMass), dt);
-        if (airDrag.quadratic > 0.0) kick += quadraticDragKick(c.velocity, airDrag.quadraticRate(c.radius, c.inverseMass), dt);
+        if (airDrag.linear > 0.0)
+            kick += linearDragKick(c.velocity, gravity, airDrag.linearRate(c.radius, c.inverseMass), dt);
+        if (airDrag.quadratic > 0.0)
+            kick += quadraticDragKick(c.velocity, airDrag.quadraticRate(c.radius, c.inverseMass), dt);
         for (const Wind& wind : fields.winds)
             if (wind.on && wind.contains(c.position))
                 kick += windKick(c.velocity, wind.airVelocity(), width * wind.drag * c.inverseMass, dt);
@@ -105,8 +109,8 @@ void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2
     }
 }
 
-void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, std::span<const int> slots, double time,
-                   double dt, BurnShare share) {
+void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, std::span<const int> slots,
+                   double time, double dt, BurnShare share) {
     const double t1 = time + dt;
     for (std::size_t k = 0; k < thrusters.size() && k < slots.size(); ++k) {
         const Thruster& thruster = thrusters[k];

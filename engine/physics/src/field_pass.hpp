@@ -12,8 +12,8 @@ namespace rube {
 /// Changes the velocity of every dynamic circle by what the fields do to it over [time, time + dt].
 /// `gravity` is needed because linear drag is integrated together with it (see field_pass.cpp).
 /// `thrusterSlots` holds each thruster's circle's slot in `circles` (-1: none this step).
-void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots, const AirDrag& airDrag,
-                 Vec2 gravity, double time, double dt);
+void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots,
+                 const AirDrag& airDrag, Vec2 gravity, double time, double dt);
 
 /// The second half of linear air drag's step, after the method's move: maps each dynamic circle's
 /// velocity onto the exact v(dt) of dv/dt = g - k v, so that position and velocity are both exact.
@@ -25,7 +25,7 @@ enum class BurnShare { beforeMove, afterMove };
 /// Changes the velocity of each thruster's circle by its share of F tau / m over [time, time + dt]
 /// (tau: how long it burns in the step), split so that the method's constant-velocity move between
 /// the two shares gives the exact displacement of a constant force. applyFields does the first share.
-void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, std::span<const int> slots, double time,
-                   double dt, BurnShare share);
+void kickThrusters(std::span<Circle> circles, const std::vector<Thruster>& thrusters, std::span<const int> slots,
+                   double time, double dt, BurnShare share);
 
 } // namespace rube

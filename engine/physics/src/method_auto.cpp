@@ -17,11 +17,10 @@
 //   3. the solver, if the island is serving a stint there (below);
 //   4. exact otherwise. All exact islands run together as one exact step (so a scene that is all
 //      exact takes exact's steps bit for bit) under the event cap their union affords; when even
-//      their union cannot be afforded, the most crowded neighbourhoods go to the solver first. A trial that reaches the cap is a
-//      crowd (a pile, a stack being struck): the state is put back, the island with the most
-//      impacts in the trial goes to the solver for a stint that doubles each time exact fails on
-//      it again (a lasting crowd costs one failed trial per stint, not one per step), and the
-//      others try again once.
+//      their union cannot be afforded, the most crowded neighbourhoods go to the solver first. A trial that reaches the
+//      cap is a crowd (a pile, a stack being struck): the state is put back, the island with the most impacts in the
+//      trial goes to the solver for a stint that doubles each time exact fails on it again (a lasting crowd costs one
+//      failed trial per stint, not one per step), and the others try again once.
 // The solver islands then run together as one solver step, on the world itself with exact's
 // bodies shown as fixed. Static segments and non-dynamic circles are shared; rigid bodies, ropes
 // and sleepers stay within their islands. The measure is a
@@ -40,8 +39,8 @@ namespace rube {
 namespace {
 
 constexpr std::int64_t kExactBudget = 65536; // pair tests a step may spend on exact searches
-constexpr std::int64_t kFewestEvents = 16;    // fewer affordable than this and exact is not tried
-constexpr int kFirstStint = 30;   // steps on the solver after exact first fails
+constexpr std::int64_t kFewestEvents = 16;   // fewer affordable than this and exact is not tried
+constexpr int kFirstStint = 30;              // steps on the solver after exact first fails
 constexpr int kLongestStint = 960;
 constexpr int kExactTrials = 2;
 // A world of more dynamic bodies than this that was wholly the solver's (a pile) keeps the solver
@@ -50,7 +49,7 @@ constexpr int kExactTrials = 2;
 // thousand balls at rest would pay it every step for nothing.
 constexpr std::int64_t kBigWorld = 64;
 constexpr int kFirstRecheck = 8;
-constexpr int kLongestRecheck = 64;   // exact trials a step: the first, and one without the island blamed
+constexpr int kLongestRecheck = 64; // exact trials a step: the first, and one without the island blamed
 
 // How many events exact may resolve within the budget, for `dynamic` moving bodies among `shapes`.
 std::int64_t affordableEvents(std::int64_t dynamic, std::int64_t shapes) {
@@ -142,7 +141,8 @@ private:
         const StepStats statsBefore = ctx.stats;
         WorldDef trialDef = ctx.def;
         trialDef.maxEventsPerStep = static_cast<int>(std::min<std::int64_t>(ctx.def.maxEventsPerStep, affordable));
-        StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats, ctx.pivots, ctx.ropes};
+        StepContext trial{trialDef,         ctx.circles, ctx.segments, ctx.bodies, ctx.time,
+                          ctx.restingSpeed, ctx.impacts, ctx.stats,    ctx.pivots, ctx.ropes};
         trial.sleep = ctx.sleep;
         exact_->step(trial, dt);
         if (ctx.stats.capsHit == statsBefore.capsHit) {
@@ -171,23 +171,27 @@ private:
         }
         if (dynamicWithFriction == 0) return false;
         if (dynamicWithFriction > 1 || otherWithFriction) return true;
-        return std::any_of(ctx.segments.begin(), ctx.segments.end(), [](const Segment& s) { return s.material.friction > 0.0; });
+        return std::any_of(ctx.segments.begin(), ctx.segments.end(),
+                           [](const Segment& s) { return s.material.friction > 0.0; });
     }
 
     static std::int64_t dynamicBodies(const StepContext& ctx) {
-        return static_cast<std::int64_t>(
-            std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion == Motion::dynamic; }) +
-            std::count_if(ctx.bodies.begin(), ctx.bodies.end(), [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
+        return static_cast<std::int64_t>(std::count_if(ctx.circles.begin(), ctx.circles.end(),
+                                                       [](const Circle& c) { return c.motion == Motion::dynamic; }) +
+                                         std::count_if(ctx.bodies.begin(), ctx.bodies.end(),
+                                                       [](const RigidBody& b) { return b.motion == Motion::dynamic; }));
     }
 
     std::int64_t sharedShapes(const StepContext& ctx) const {
-        const auto circles = std::count_if(ctx.circles.begin(), ctx.circles.end(), [](const Circle& c) { return c.motion != Motion::dynamic; });
+        const auto circles = std::count_if(ctx.circles.begin(), ctx.circles.end(),
+                                           [](const Circle& c) { return c.motion != Motion::dynamic; });
         return static_cast<std::int64_t>(circles) + static_cast<std::int64_t>(ctx.segments.size());
     }
 
     bool inStint(const Island& island) const {
         const auto members = islands_.members(island);
-        return std::any_of(members.begin(), members.end(), [&](int n) { return stintLeft_[static_cast<std::size_t>(n)] > 0; });
+        return std::any_of(members.begin(), members.end(),
+                           [&](int n) { return stintLeft_[static_cast<std::size_t>(n)] > 0; });
     }
 
     // Rules 1 to 3 of the header, and rule 4's union: fills onExact_ per island.
@@ -225,7 +229,8 @@ private:
                 std::find(crowds_.begin(), crowds_.end(), islands[k].neighbourhood) == crowds_.end())
                 crowds_.push_back(islands[k].neighbourhood);
         std::sort(crowds_.begin(), crowds_.end(), [&](int x, int y) {
-            const std::int64_t cx = crowdDynamic_[static_cast<std::size_t>(x)], cy = crowdDynamic_[static_cast<std::size_t>(y)];
+            const std::int64_t cx = crowdDynamic_[static_cast<std::size_t>(x)],
+                               cy = crowdDynamic_[static_cast<std::size_t>(y)];
             return cx > cy || (cx == cy && x < y);
         });
         for (const int crowd : crowds_) {
@@ -280,7 +285,8 @@ private:
             // The blamed island serves a stint on the solver; the others may try once more.
             for (int n : islands_.members(islands_.islands()[static_cast<std::size_t>(blamed)])) {
                 stintLeft_[static_cast<std::size_t>(n)] = stintLength_[static_cast<std::size_t>(n)];
-                stintLength_[static_cast<std::size_t>(n)] = std::min(2 * stintLength_[static_cast<std::size_t>(n)], kLongestStint);
+                stintLength_[static_cast<std::size_t>(n)] = std::min(2 * stintLength_[static_cast<std::size_t>(n)],
+                                                                     kLongestStint);
             }
             onExact_[static_cast<std::size_t>(blamed)] = 0;
         }
@@ -302,13 +308,16 @@ private:
             exactSubset_.gather(ctx, chosen_);
         }
         WorldDef trialDef = ctx.def;
-        const std::int64_t shapes = whole ? static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() + ctx.bodies.size())
-                                          : static_cast<std::int64_t>(exactSubset_.circleIndices().size() + ctx.segments.size() +
+        const std::int64_t shapes = whole ? static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() +
+                                                                      ctx.bodies.size())
+                                          : static_cast<std::int64_t>(exactSubset_.circleIndices().size() +
+                                                                      ctx.segments.size() +
                                                                       exactSubset_.bodyIndices().size());
         const std::int64_t affordable = affordableEvents(dynamicBodiesOn(true), shapes);
         trialDef.maxEventsPerStep = static_cast<int>(std::min<std::int64_t>(ctx.def.maxEventsPerStep, affordable));
         if (whole) {
-            StepContext trial{trialDef, ctx.circles, ctx.segments, ctx.bodies, ctx.time, ctx.restingSpeed, ctx.impacts, ctx.stats, ctx.pivots, ctx.ropes};
+            StepContext trial{trialDef,         ctx.circles, ctx.segments, ctx.bodies, ctx.time,
+                              ctx.restingSpeed, ctx.impacts, ctx.stats,    ctx.pivots, ctx.ropes};
             trial.sleep = ctx.sleep;
             exact_->step(trial, dt);
         } else {
@@ -345,7 +354,9 @@ private:
         impactCounts_.assign(islands.size(), 0);
         for (std::size_t n = from; n < ctx.impacts.size(); ++n) {
             const Impact& impact = ctx.impacts[n];
-            const int node = impact.circle >= 0 ? impact.circle : impact.body >= 0 ? static_cast<int>(ctx.circles.size()) + impact.body : -1;
+            const int node = impact.circle >= 0 ? impact.circle
+                             : impact.body >= 0 ? static_cast<int>(ctx.circles.size()) + impact.body
+                                                : -1;
             if (node < 0) continue;
             const int island = islands_.islandOf(node);
             if (island >= 0) ++impactCounts_[static_cast<std::size_t>(island)];
@@ -353,7 +364,8 @@ private:
         int best = -1;
         for (std::size_t k = 0; k < islands.size(); ++k) {
             if (!onExact_[k] || islands[k].dynamicBodies == 0) continue;
-            if (best < 0 || impactCounts_[k] > impactCounts_[static_cast<std::size_t>(best)]) best = static_cast<int>(k);
+            if (best < 0 || impactCounts_[k] > impactCounts_[static_cast<std::size_t>(best)])
+                best = static_cast<int>(k);
         }
         return best;
     }
@@ -362,7 +374,8 @@ private:
     // warm-start cache and sleeping islands keep naming bodies by their world index from step to
     // step whichever islands exact takes: exact's bodies are shown to it as fixed where they
     // started (none is within reach of a solver island this step), then given exact's results.
-    void runSolver(StepContext& ctx, double dt, bool exactOnSubset, bool ranSolverBefore, std::int64_t dynamicOnSolver) {
+    void runSolver(StepContext& ctx, double dt, bool exactOnSubset, bool ranSolverBefore,
+                   std::int64_t dynamicOnSolver) {
         if (allOnExact()) return;
         // A solver that sat out some steps starts afresh: its warm-start impulses belong to
         // contacts that have since moved.
@@ -404,13 +417,13 @@ private:
     std::size_t circleCount_ = 0;
     AutoIslands islands_;
     StepSubset exactSubset_;
-    std::vector<std::uint8_t> onExact_;     // per island
-    std::vector<std::uint8_t> chosen_;      // per node, for a subset
-    std::vector<int> stintLeft_;            // per node: steps it has yet to spend on the solver
-    std::vector<int> stintLength_;          // per node: the stint it serves if exact fails on it again
+    std::vector<std::uint8_t> onExact_;                   // per island
+    std::vector<std::uint8_t> chosen_;                    // per node, for a subset
+    std::vector<int> stintLeft_;                          // per node: steps it has yet to spend on the solver
+    std::vector<int> stintLength_;                        // per node: the stint it serves if exact fails on it again
     std::vector<std::int64_t> crowdDynamic_, crowdNodes_; // per neighbourhood (its lowest node)
-    std::vector<int> crowds_;               // neighbourhoods on exact, most crowded first
-    std::vector<int> impactCounts_;         // per island, for the blame after a failed trial
+    std::vector<int> crowds_;                             // neighbourhoods on exact, most crowded first
+    std::vector<int> impactCounts_;                       // per island, for the blame after a failed trial
     std::vector<Circle> circlesBefore_;
     std::vector<Segment> segmentsBefore_, segmentsAfterExact_;
     std::vector<RigidBody> bodiesBefore_;

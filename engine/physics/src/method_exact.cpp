@@ -180,7 +180,8 @@ private:
         for (int b = 0; b < static_cast<int>(ctx.bodies.size()); ++b) {
             if (!isBlock(ctx.bodies[b])) continue;
             const BlockEvent event = earliestBlockImpact(ctx, b, search);
-            if (event.time < best.time) best = Candidate{event.time, -1, event.kind, event.other, event.normal, event, -1};
+            if (event.time < best.time)
+                best = Candidate{event.time, -1, event.kind, event.other, event.normal, event, -1};
         }
         // A held circle leaves its face where its centre passes the face's end: from there on its cap.
         for (int f = 0; f < held_.size(); ++f) {
@@ -200,7 +201,7 @@ private:
         for (std::size_t i = 0; i < ctx.circles.size(); ++i) {
             Circle& c = ctx.circles[i];
             if (c.motion == Motion::dynamic) {
-                const Vec2 a = held_.acceleration(i); // gravity, or what the faces holding it leave of it
+                const Vec2 a = held_.acceleration(i);             // gravity, or what the faces holding it leave of it
                 c.position += c.velocity * t + a * (0.5 * t * t); // p + v t + a t^2 / 2
                 c.velocity += a * t;
             } else if (c.motion == Motion::kinematic) {
@@ -281,7 +282,8 @@ private:
     void release(int f) {
         const HeldFace held = held_.release(f);
         const int column = columnOf(Other::segment, held.segment);
-        std::erase_if(restingOf_[static_cast<std::size_t>(held.circle)], [&](const RestingPair& p) { return p.column == column; });
+        std::erase_if(restingOf_[static_cast<std::size_t>(held.circle)],
+                      [&](const RestingPair& p) { return p.column == column; });
     }
 
     // Leaves out of blockResting_ every pair with this circle (kind circle) or block (kind body).
@@ -433,11 +435,11 @@ private:
 
     int circleCount_ = 0;
     std::vector<std::vector<RestingPair>> restingOf_; ///< per circle: the pairs it rests in for the rest of the step
-    std::vector<Contact> contacts_;   ///< the end-of-step settle's pairs
-    std::vector<int> levels_;         ///< per circle: contacts between it and the ground
-    std::vector<Vec2> centres_;       ///< the clean-up's side reference after a cap hit
-    std::vector<BlockPair> blockResting_; ///< blocks' pairs resting for the rest of the step (few)
-    HeldFaces held_;                   ///< circles held on static faces for the rest of the step (few)
+    std::vector<Contact> contacts_;                   ///< the end-of-step settle's pairs
+    std::vector<int> levels_;                         ///< per circle: contacts between it and the ground
+    std::vector<Vec2> centres_;                       ///< the clean-up's side reference after a cap hit
+    std::vector<BlockPair> blockResting_;             ///< blocks' pairs resting for the rest of the step (few)
+    HeldFaces held_;                                  ///< circles held on static faces for the rest of the step (few)
 };
 
 } // namespace

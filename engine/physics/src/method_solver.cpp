@@ -69,11 +69,14 @@ public:
         findContacts(ctx, dt);
         // Sleepers that something reached wake before anything is solved, and the contacts are found
         // again with them moving (each pass wakes at least one island, so this ends).
-        while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_, bulletPaths(dt))) {
+        while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_,
+                                               bulletPaths(dt))) {
             prepareBodies(ctx, dt);
             findContacts(ctx, dt);
         }
-        if (turning_) turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_, frictionBodies_);
+        if (turning_)
+            turningContacts_.attach(contacts_, ctx.circles, ctx.segments, bodies_, inverseMass_, omega_,
+                                    frictionBodies_);
         solve(ctx, dt);
         finish(ctx, dt);
     }
@@ -115,13 +118,13 @@ private:
     std::vector<double> gaps_; // per contact: its gap during the current substep's relax passes
     // Rotation and friction, touched only in steps where some circle spins or some pair has friction.
     bool anyRotation_ = false;
-    std::vector<FrictionTerms> frictions_; // parallel to contacts_ in steps with rotation
+    std::vector<FrictionTerms> frictions_;     // parallel to contacts_ in steps with rotation
     std::vector<FrictionBody> frictionBodies_; // per solver body in steps with rotation
-    std::vector<double> tangentImpulses_;  // scratch: the friction impulses the cache keeps
-    std::vector<double> omega_;           // per solver body: angular velocity (segments stay 0)
-    std::vector<int> rotating_;           // circles that turn this step
-    std::vector<double> turn_;            // per rotating circle: angle turned this step
-    std::vector<std::uint8_t> marks_;     // scratch: circle already listed as rotating
+    std::vector<double> tangentImpulses_;      // scratch: the friction impulses the cache keeps
+    std::vector<double> omega_;                // per solver body: angular velocity (segments stay 0)
+    std::vector<int> rotating_;                // circles that turn this step
+    std::vector<double> turn_;                 // per rotating circle: angle turned this step
+    std::vector<std::uint8_t> marks_;          // scratch: circle already listed as rotating
     ContactOrderScratch orderScratch_;
     BroadphaseGrid grid_;
     ContactCache cache_;
@@ -176,7 +179,8 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
         isDynamic_[i] = dynamic ? 1 : 0;
         // Model no more than the scene needs: rotation only once a circle can turn (it spins, or it
         // could meet friction); otherwise no angular state is touched at all.
-        if (dynamic && c.inverseInertia > 0.0 && (c.material.friction > 0.0 || c.angularVelocity != 0.0)) anyRotation_ = true;
+        if (dynamic && c.inverseInertia > 0.0 && (c.material.friction > 0.0 || c.angularVelocity != 0.0))
+            anyRotation_ = true;
         const double travel = v.length() * dt;
         if (dynamic && travel > kFastTravelPerRadius * c.radius) fastStep_ = true;
         double margin = kSpeculativePerRadius * c.radius + travel;
@@ -198,7 +202,8 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
         if (seg.angularVelocity != 0.0) {
             // A turning segment's ends move up to |omega| times their distance from the pivot farther.
             const Vec2 pivot = lerp(seg.a, seg.b, seg.pivotAlong);
-            const double turn = std::abs(seg.angularVelocity) * std::max((seg.a - pivot).length(), (seg.b - pivot).length()) * dt;
+            const double turn = std::abs(seg.angularVelocity) *
+                                std::max((seg.a - pivot).length(), (seg.b - pivot).length()) * dt;
             margins_[body] += turn;
             reach += turn;
             turning_ = true;
@@ -244,14 +249,16 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
                 filingBoxes_[i] = circleBoxes_[i];
                 bullets_.push_back(i);
             }
-            if (!isDynamic_[i] && !ctx.circles[i].sleep.asleep) continue; // sleepers inside the grid, not in its border cells
+            if (!isDynamic_[i] && !ctx.circles[i].sleep.asleep)
+                continue; // sleepers inside the grid, not in its border cells
             region.min = {std::min(region.min.x, filingBoxes_[i].min.x), std::min(region.min.y, filingBoxes_[i].min.y)};
             region.max = {std::max(region.max.x, filingBoxes_[i].max.x), std::max(region.max.y, filingBoxes_[i].max.y)};
         }
         // Within the world's bounds: escaped bodies are clamped into the grid's border cells.
-        const BoundingBox bounds{ctx.def.bounds.min - Vec2{cellSize, cellSize}, ctx.def.bounds.max + Vec2{cellSize, cellSize}};
+        const BoundingBox bounds{ctx.def.bounds.min - Vec2{cellSize, cellSize},
+                                 ctx.def.bounds.max + Vec2{cellSize, cellSize}};
         const BoundingBox clipped{{std::max(region.min.x, bounds.min.x), std::max(region.min.y, bounds.min.y)},
-                          {std::min(region.max.x, bounds.max.x), std::min(region.max.y, bounds.max.y)}};
+                                  {std::min(region.max.x, bounds.max.x), std::min(region.max.y, bounds.max.y)}};
         if (clipped.min.x <= clipped.max.x && clipped.min.y <= clipped.max.y) region = clipped;
         grid_.build(filingBoxes_, sweptSegments_, region, cellSize, 4 * circleCount_ + 64);
         grid_.findPairs(circleBoxes_, segmentBoxes_, isDynamic_, pairs_);
@@ -274,17 +281,23 @@ void SolverMethod::findFriction(const StepContext& ctx) {
     const auto& circles = ctx.circles;
     const auto& segments = ctx.segments;
     // A pair's friction is the product of both materials' (as its bounciness is, and as Chipmunk does).
-    buildFriction(contacts_, records_, circles, inverseMass_, [&](std::size_t k) {
-        const ContactConstraint& c = contacts_[k];
-        const double other = c.b < circleCount_ ? circles[static_cast<std::size_t>(c.b)].material.friction
-                                                : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
-        return circles[static_cast<std::size_t>(c.a)].material.friction * other;
-    }, frictions_);
+    buildFriction(
+        contacts_, records_, circles, inverseMass_,
+        [&](std::size_t k) {
+            const ContactConstraint& c = contacts_[k];
+            const double other = c.b < circleCount_
+                                     ? circles[static_cast<std::size_t>(c.b)].material.friction
+                                     : segments[static_cast<std::size_t>(c.b - circleCount_)].material.friction;
+            return circles[static_cast<std::size_t>(c.a)].material.friction * other;
+        },
+        frictions_);
     buildFrictionBodies(circles, segments, bodies_.size(), frictionBodies_);
     omega_.assign(bodies_.size(), 0.0);
     marks_.assign(ctx.circles.size(), 0);
     const auto list = [&](int body) {
-        if (body >= circleCount_ || marks_[static_cast<std::size_t>(body)] || !isDynamic_[static_cast<std::size_t>(body)]) return;
+        if (body >= circleCount_ || marks_[static_cast<std::size_t>(body)] ||
+            !isDynamic_[static_cast<std::size_t>(body)])
+            return;
         marks_[static_cast<std::size_t>(body)] = 1;
         rotating_.push_back(body);
     };
@@ -296,7 +309,8 @@ void SolverMethod::findFriction(const StepContext& ctx) {
         list(contacts_[k].b);
     }
     if (hasRigid_) rigid_.listFrictionCircles(list);
-    for (const int i : rotating_) omega_[static_cast<std::size_t>(i)] = circles[static_cast<std::size_t>(i)].angularVelocity;
+    for (const int i : rotating_)
+        omega_[static_cast<std::size_t>(i)] = circles[static_cast<std::size_t>(i)].angularVelocity;
     turn_.assign(rotating_.size(), 0.0);
 }
 
@@ -324,7 +338,8 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
         if (hasRigid_) rigid_.solve(h, true);
         solveContacts(contacts_, records_, bodies_, inverseMass_, softness, h, k, kMaxPushSpeed, friction);
         for (SolverBody& b : bodies_) b.displacement += b.velocity * h;
-        for (std::size_t r = 0; r < rotating_.size(); ++r) turn_[r] += omega_[static_cast<std::size_t>(rotating_[r])] * h;
+        for (std::size_t r = 0; r < rotating_.size(); ++r)
+            turn_[r] += omega_[static_cast<std::size_t>(rotating_[r])] * h;
         if (hasRigid_) rigid_.integratePositions(h);
         for (int r = 0; r < relaxIterations; ++r) {
             if (hasRigid_) rigid_.solve(h, false);
@@ -335,7 +350,9 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     if (!hasRigid_) flyFreeCirclesExactly(ctx, dt);
     // Rigid bodies hold circles through their own contacts, which the count of a circle's contacts
     // does not see; bullets are bounced by the continuous pass.
-    if (!hasRigid_) carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_, ctx.restingSpeed, ctx.def.gravity, dt, h);
+    if (!hasRigid_)
+        carryPastImpact(contacts_, records_, bodies_, ctx.circles, inverseMass_, isBullet_, circleCount_,
+                        ctx.restingSpeed, ctx.def.gravity, dt, h);
     applyRestitution(contacts_, records_, bodies_, inverseMass_, ctx.restingSpeed, gravityStep);
     if (turning_) turningContacts_.detach(contacts_);
     tangentImpulses_.clear();
@@ -397,14 +414,16 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
     const std::size_t firstImpact = ctx.impacts.size();
     // The sweep sees segments at their start, moving with their velocity over the step.
     inFlight_.assign(isDynamic_.begin(), isDynamic_.end());
-    if (hasRigid_) std::fill(inFlight_.begin(), inFlight_.end(), std::uint8_t{0}); // boxes' contacts are not listed here
+    if (hasRigid_)
+        std::fill(inFlight_.begin(), inFlight_.end(), std::uint8_t{0}); // boxes' contacts are not listed here
     for (std::size_t k = 0; k < contacts_.size(); ++k) {
         const ContactConstraint& c = contacts_[k];
         if (c.impulse <= 0.0 && records_[k].firstTouch < 0) continue;
         inFlight_[static_cast<std::size_t>(c.a)] = 0;
         if (c.b < circleCount_) inFlight_[static_cast<std::size_t>(c.b)] = 0;
     }
-    const SweepInput sweepInput{start_, margins_, bullets_, isBullet_, isDynamic_, cache_, inFlight_, kMaxSweepCellsPerAxis};
+    const SweepInput sweepInput{start_,     margins_, bullets_,  isBullet_,
+                                isDynamic_, cache_,   inFlight_, kMaxSweepCellsPerAxis};
     int impacts = sweep_.run(sweepInput, grid_, ctx, dt);
     if (hasRigid_) impacts += rigid_.sweep(ctx, dt);
     for (Segment& seg : ctx.segments) {
@@ -424,7 +443,9 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
                   return a.body < b.body;
               });
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
-    if (ctx.sleep) sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep, ctx.def.gravity);
+    if (ctx.sleep)
+        sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep,
+                      ctx.def.gravity);
 }
 
 } // namespace

@@ -26,10 +26,10 @@ struct TurnImpact {
     Collision collision;
     Other kind = Other::circle;
     int other = -1;
-    Vec2 otherVelocity;          ///< the other's velocity (zero for a body standing still in this turn)
+    Vec2 otherVelocity; ///< the other's velocity (zero for a body standing still in this turn)
     double otherInverseMass = 0.0;
     double bounciness = 1.0;
-    bool scripted = false;       ///< the other is kinematic: it keeps moving during the turn
+    bool scripted = false; ///< the other is kinematic: it keeps moving during the turn
 };
 
 class TurnBasedMethod final : public StepMethod {
@@ -45,7 +45,8 @@ public:
             if (ctx.circles[i].motion == Motion::dynamic && takeTurn(ctx, i, dt)) ++events;
         // Lecture 3's blocks take their turns after the circles, in index order.
         for (int i = 0; i < static_cast<int>(ctx.bodies.size()); ++i)
-            if (isBlock(ctx.bodies[i]) && ctx.bodies[i].motion == Motion::dynamic && takeBlockTurn(ctx, i, dt)) ++events;
+            if (isBlock(ctx.bodies[i]) && ctx.bodies[i].motion == Motion::dynamic && takeBlockTurn(ctx, i, dt))
+                ++events;
         for (RigidBody& b : ctx.bodies)
             if (isBlock(b) && b.motion == Motion::kinematic) b.position += b.velocity * dt;
         // Kinematic bodies follow their scripts over the whole step; the turns saw them doing so.
@@ -112,17 +113,23 @@ private:
             const Vec2 surface = velocityTowards(s, c.position);
             const CircleMotion motion{c.position, c.velocity - surface, c.radius, {}};
             const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, dt);
-            consider(hit, TurnImpact{{}, hit && hit->lineCap ? Other::segmentCap : Other::segment, k, surface, 0.0,
-                                     pairBounciness(c.material, s.material), scripted});
+            consider(hit, TurnImpact{{},
+                                     hit && hit->lineCap ? Other::segmentCap : Other::segment,
+                                     k,
+                                     surface,
+                                     0.0,
+                                     pairBounciness(c.material, s.material),
+                                     scripted});
         }
         for (int j = 0; j < static_cast<int>(ctx.circles.size()); ++j) {
             const Circle& o = ctx.circles[j];
             if (j == i) continue;
             const bool scripted = o.motion == Motion::kinematic;
             const Vec2 relative = scripted ? c.velocity - o.velocity : c.velocity;
-            consider(circleCircleCollision({c.position, relative, c.radius, {}}, o.position, o.radius, dt),
-                     TurnImpact{{}, Other::circle, j, o.velocity, o.inverseMass, pairBounciness(c.material, o.material),
-                                scripted});
+            consider(
+                circleCircleCollision({c.position, relative, c.radius, {}}, o.position, o.radius, dt),
+                TurnImpact{
+                    {}, Other::circle, j, o.velocity, o.inverseMass, pairBounciness(c.material, o.material), scripted});
         }
         // Blocks stand still too; the block's motion relative to the circle is the circle's reversed.
         for (int b = 0; b < static_cast<int>(ctx.bodies.size()); ++b) {
@@ -135,8 +142,10 @@ private:
             // Seen from the circle: its centre then, and the normal from the block towards it.
             const Collision seen{hit->timeOfImpact, c.position + relative * hit->timeOfImpact, -hit->normal,
                                  hit->contactPoint + relative * hit->timeOfImpact, hit->lineCap};
-            consider(seen, TurnImpact{{}, Other::body, b, o.velocity, o.inverseMass, pairBounciness(c.material, o.material),
-                                      scripted});
+            consider(
+                seen,
+                TurnImpact{
+                    {}, Other::body, b, o.velocity, o.inverseMass, pairBounciness(c.material, o.material), scripted});
         }
         if (!first) {
             c.position += c.velocity * dt;
@@ -177,8 +186,8 @@ private:
         }
         if (holdsStill) rested = *first;
         if (!(approach > 0.0)) return goesOn;
-        ctx.impacts.push_back(Impact{i, first->kind, first->other, now + t, hit.contactPoint + carried, hit.normal,
-                                     approach});
+        ctx.impacts.push_back(
+            Impact{i, first->kind, first->other, now + t, hit.contactPoint + carried, hit.normal, approach});
         ++ctx.stats.impacts;
         if (resting) {
             ++ctx.stats.restingContacts;

@@ -5,7 +5,8 @@
 
 namespace rube {
 
-void preparePivots(std::span<const Pivot> pivots, std::span<const RigidBody> bodies, std::vector<PivotConstraint>& out) {
+void preparePivots(std::span<const Pivot> pivots, std::span<const RigidBody> bodies,
+                   std::vector<PivotConstraint>& out) {
     const bool same = out.size() == pivots.size();
     out.resize(pivots.size());
     for (std::size_t k = 0; k < pivots.size(); ++k) {
@@ -28,7 +29,8 @@ void warmStartPivots(std::span<const PivotConstraint> pivots, const RigidSolverV
     }
 }
 
-void solvePivots(std::span<PivotConstraint> pivots, const RigidSolverView& view, const Softness& softness, bool useBias) {
+void solvePivots(std::span<PivotConstraint> pivots, const RigidSolverView& view, const Softness& softness,
+                 bool useBias) {
     for (PivotConstraint& c : pivots) {
         RigidState& s = view.rigid[static_cast<std::size_t>(c.body)];
         const double m = s.inverseMass, i = s.inverseInertia;

@@ -21,10 +21,10 @@ namespace rube {
 
 /// A pivot during one step.
 struct PivotConstraint {
-    int body = 0;      ///< rigid body index
-    Vec2 arm;          ///< anchor from the body's centre at the step's start, m
-    Vec2 startError;   ///< p + r - anchor at the step's start, m
-    Vec2 impulse;      ///< of the current substep, warm starts the next (and the next step)
+    int body = 0;    ///< rigid body index
+    Vec2 arm;        ///< anchor from the body's centre at the step's start, m
+    Vec2 startError; ///< p + r - anchor at the step's start, m
+    Vec2 impulse;    ///< of the current substep, warm starts the next (and the next step)
 };
 
 /// Fills `out` for `pivots` on `bodies` as they stand at the step's start; impulses carried over
@@ -35,6 +35,7 @@ void preparePivots(std::span<const Pivot> pivots, std::span<const RigidBody> bod
 void warmStartPivots(std::span<const PivotConstraint> pivots, const RigidSolverView& view);
 
 /// One Gauss-Seidel sweep over the pivots: soft position feedback when `useBias`.
-void solvePivots(std::span<PivotConstraint> pivots, const RigidSolverView& view, const Softness& softness, bool useBias);
+void solvePivots(std::span<PivotConstraint> pivots, const RigidSolverView& view, const Softness& softness,
+                 bool useBias);
 
 } // namespace rube

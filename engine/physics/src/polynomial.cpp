@@ -13,13 +13,9 @@ int Polynomial::degree() const {
     return 0;
 }
 
-double Polynomial::operator()(double t) const {
-    return (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0];
-}
+double Polynomial::operator()(double t) const { return (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0]; }
 
-Polynomial Polynomial::derivative() const {
-    return Polynomial{{c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0}};
-}
+Polynomial Polynomial::derivative() const { return Polynomial{{c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0}}; }
 
 namespace {
 
@@ -83,8 +79,7 @@ int rootsBetween(const Polynomial& p, double lo, double hi, std::array<double, 4
         // A zero exactly at a piece's start (an extremum touching zero) is a root; the start of the
         // first piece is lo itself, which is outside the open interval.
         if (fl == 0.0 && xl > lo) roots[count++] = xl;
-        else if (fl != 0.0 && fr != 0.0 && positive(fl) != positive(fr))
-            roots[count++] = refineRoot(p, dp, xl, xr, fl);
+        else if (fl != 0.0 && fr != 0.0 && positive(fl) != positive(fr)) roots[count++] = refineRoot(p, dp, xl, xr, fl);
         xl = xr;
         fl = fr;
     }

@@ -7,9 +7,7 @@
 
 namespace rube {
 
-double pairBounciness(const Material& first, const Material& second) {
-    return first.bounciness * second.bounciness;
-}
+double pairBounciness(const Material& first, const Material& second) { return first.bounciness * second.bounciness; }
 
 double approachSpeed(Vec2 v1, Vec2 v2, Vec2 normal) { return -(v1 - v2).dot(normal); }
 
@@ -83,7 +81,7 @@ int separateOverlaps(StepContext& ctx, std::span<const Vec2> sideCentres, double
             const auto hit = circleSegmentOverlapOnSide(c.position, c.radius, s, segmentSide(before, sideCentres[i]));
             if (!hit) continue;
             c.position += hit->overlap.normal * hit->overlap.depth; // a segment has infinite mass
-            Vec2 wallVelocity = s.velocityAt(hit->overlap.point); // v + omega x r on a turning segment
+            Vec2 wallVelocity = s.velocityAt(hit->overlap.point);   // v + omega x r on a turning segment
             const double approach = resolveImpact(c.velocity, c.inverseMass, wallVelocity, 0.0, hit->overlap.normal,
                                                   pairBounciness(c.material, s.material));
             note(i, hit->lineCap ? Other::segmentCap : Other::segment, k, hit->overlap, approach);
@@ -98,8 +96,8 @@ int separateOverlaps(StepContext& ctx, std::span<const Vec2> sideCentres, double
             Vec2 otherPosition = o.position;
             Vec2 otherVelocity = o.velocity;
             pushApart(c.position, c.inverseMass, otherPosition, o.inverseMass, hit->normal, hit->depth);
-            const double approach = resolveImpact(c.velocity, c.inverseMass, otherVelocity, o.inverseMass,
-                                                  hit->normal, pairBounciness(c.material, o.material));
+            const double approach = resolveImpact(c.velocity, c.inverseMass, otherVelocity, o.inverseMass, hit->normal,
+                                                  pairBounciness(c.material, o.material));
             if (dynamicOther) {
                 o.position = otherPosition;
                 o.velocity = otherVelocity;

@@ -49,6 +49,7 @@ std::optional<SegmentOverlap> circleSegmentOverlapOnSide(Vec2 centre, double rad
 /// velocity reflected with Newton's formula if approaching. A segment's face side is the one the circle's
 /// centre `sideCentres[i]` was on against the segment moved back by its velocity times `sideDelay`.
 /// With `record`, appends each separated overlap as an Impact at world time `time`; returns how many there were.
-int separateOverlaps(StepContext& context, std::span<const Vec2> sideCentres, double sideDelay, double time, bool record);
+int separateOverlaps(StepContext& context, std::span<const Vec2> sideCentres, double sideDelay, double time,
+                     bool record);
 
 } // namespace rube

@@ -90,8 +90,8 @@ void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& vi
     }
 }
 
-void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, const RigidContactSoftness& softness,
-                        double h, bool useBias) {
+void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view,
+                        const RigidContactSoftness& softness, double h, bool useBias) {
     const double invH = 1.0 / h;
     for (RigidContact& c : contacts) {
         LoadedBody a = load(view, c.a), b = load(view, c.b);
@@ -142,7 +142,9 @@ void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView&
 
 namespace {
 
-bool bounces(const RigidContactPoint& p, double threshold) { return p.maxNormalImpulse > 0.0 && p.approachSpeed >= threshold; }
+bool bounces(const RigidContactPoint& p, double threshold) {
+    return p.maxNormalImpulse > 0.0 && p.approachSpeed >= threshold;
+}
 
 /// Both points of a two-point contact at once (the 2 x 2 linear complementarity problem solved by
 /// enumerating its four cases, as Box2D v2's block solver): with the points' normal speeds driven to
@@ -196,7 +198,8 @@ void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverVi
     for (RigidContact& c : contacts) {
         if (c.bounciness == 0.0) continue;
         LoadedBody a = load(view, c.a), b = load(view, c.b);
-        if (c.count == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold) && blockRestitution(c, a, b)) {
+        if (c.count == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold) &&
+            blockRestitution(c, a, b)) {
             store(view, c.a, a);
             store(view, c.b, b);
             continue;

@@ -21,25 +21,26 @@ namespace rube {
 
 /// One point of a rigid contact.
 struct RigidContactPoint {
-    Vec2 anchorA, anchorB;           ///< from each body's centre at the step's start, m
-    double baseSeparation = 0.0;     ///< s0 - n . (rB - rA): the gap formula's constant term
+    Vec2 anchorA, anchorB;       ///< from each body's centre at the step's start, m
+    double baseSeparation = 0.0; ///< s0 - n . (rB - rA): the gap formula's constant term
     double normalMass = 0.0;
     double tangentMass = 0.0;
-    double normalImpulse = 0.0;      ///< of the current substep (warm starts the next), >= 0
+    double normalImpulse = 0.0; ///< of the current substep (warm starts the next), >= 0
     double tangentImpulse = 0.0;
-    double deliveredNormal = 0.0;    ///< normal impulse this point applied over the step so far (all substeps), N s
-    double deliveredTangent = 0.0;   ///< tangent impulse likewise: with the normal one, what measureApproach takes back out
-    double maxNormalImpulse = 0.0;   ///< largest normal impulse of the step: 0 means it never touched
-    double approachSpeed = 0.0;      ///< -vn before the substep in which it first pushed: what restitution reverses
-    int touchSubstep = 0;            ///< the substep in which it first pushed (once maxNormalImpulse > 0)
-    std::uint32_t feature = 0;       ///< which faces and vertices made it (the manifold's id): the warm-start key
-    bool carried = false;            ///< warm started from the last step: resting contact, never a new impact
+    double deliveredNormal = 0.0; ///< normal impulse this point applied over the step so far (all substeps), N s
+    double deliveredTangent =
+        0.0; ///< tangent impulse likewise: with the normal one, what measureApproach takes back out
+    double maxNormalImpulse = 0.0; ///< largest normal impulse of the step: 0 means it never touched
+    double approachSpeed = 0.0;    ///< -vn before the substep in which it first pushed: what restitution reverses
+    int touchSubstep = 0;          ///< the substep in which it first pushed (once maxNormalImpulse > 0)
+    std::uint32_t feature = 0;     ///< which faces and vertices made it (the manifold's id): the warm-start key
+    bool carried = false;          ///< warm started from the last step: resting contact, never a new impact
 };
 
 /// A manifold turned into a constraint: one normal, up to two points.
 struct RigidContact {
     BodySide a, b;
-    Vec2 normal;       ///< unit, from A towards B
+    Vec2 normal;             ///< unit, from A towards B
     double friction = 0.0;   ///< mu of the pair: the product of both materials' (as circle pairs)
     double bounciness = 0.0; ///< C of the pair: the product of both materials'
     int count = 0;
@@ -78,8 +79,8 @@ void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& vi
 
 /// One Gauss-Seidel sweep: normal impulses (soft push-out when `useBias`, speculative gaps always
 /// kept), then friction within the Coulomb cone |lambda_t| <= mu lambda_n.
-void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, const RigidContactSoftness& softness,
-                        double h, bool useBias);
+void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view,
+                        const RigidContactSoftness& softness, double h, bool useBias);
 
 /// Restitution once per step for points that touched faster than `threshold`: the normal velocity
 /// becomes -C times the approach speed (v' = -C vn, lecture 3).

@@ -30,9 +30,10 @@ RoundedPolygon makeRoundedPolygon(const Segment& segment);
 
 /// One point of a manifold.
 struct ManifoldPoint {
-    Vec2 point;        ///< world point midway between the two surfaces
-    double separation; ///< surface gap along the normal (negative: overlap), m
-    std::uint32_t id = 0; ///< the features that made it (reference face, incident edge and end), equal from step to step while they touch
+    Vec2 point;           ///< world point midway between the two surfaces
+    double separation;    ///< surface gap along the normal (negative: overlap), m
+    std::uint32_t id = 0; ///< the features that made it (reference face, incident edge and end), equal from step to
+                          ///< step while they touch
 };
 
 /// Up to two contact points sharing one normal.

@@ -16,8 +16,8 @@ namespace rube {
 struct RigidState {
     Vec2 velocity;
     double omega = 0.0;
-    Vec2 displacement;     ///< m moved since the step began
-    double turn = 0.0;     ///< radians turned since the step began
+    Vec2 displacement;           ///< m moved since the step began
+    double turn = 0.0;           ///< radians turned since the step began
     Vec2 turnRotation{1.0, 0.0}; ///< (cos turn, sin turn)
     double inverseMass = 0.0;
     double inverseInertia = 0.0;
@@ -33,9 +33,9 @@ struct BodySide {
 /// Everything the substeps may touch: the rigid states and the circle solver's bodies.
 struct RigidSolverView {
     std::span<RigidState> rigid;
-    std::span<SolverBody> others;       ///< the circle solver's bodies: circles, then segments
-    std::span<double> omega;            ///< per circle-solver body; empty when the step has no rotation
-    std::span<const Circle> circles;    ///< for the circles' inverse mass and inertia
+    std::span<SolverBody> others;    ///< the circle solver's bodies: circles, then segments
+    std::span<double> omega;         ///< per circle-solver body; empty when the step has no rotation
+    std::span<const Circle> circles; ///< for the circles' inverse mass and inertia
 };
 
 /// A side's velocities and displacement, loaded for a constraint and stored back after it.

@@ -107,8 +107,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     others_.assign(ctx.circles.size() + ctx.segments.size(), SolverBody{});
     zeros_.assign(others_.size(), 0.0);
     const RigidSolverView massView{states_, others_, zeros_, ctx.circles};
-    const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const RoundedPolygon& pa, const RoundedPolygon& pb,
-                         double speculative, const Material& ma, const Material& mb) {
+    const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const RoundedPolygon& pa,
+                         const RoundedPolygon& pb, double speculative, const Material& ma, const Material& mb) {
         const Manifold m = collideRoundedPolygons(pa, pb, speculative);
         if (m.count == 0) return;
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
@@ -120,8 +120,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         for (std::size_t j = i + 1; j < n; ++j) {
             if (!isDynamic(i) && !isDynamic(j)) continue;
             if (!boxes[i].overlaps(boxes[j])) continue;
-            add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j], reach_[i] + reach_[j],
-                bi.material, bodies[j].material);
+            add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j],
+                reach_[i] + reach_[j], bi.material, bodies[j].material);
         }
         for (std::size_t c = 0; c < ctx.circles.size(); ++c) {
             const Circle& circle = ctx.circles[c];
@@ -131,8 +131,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const double reach = kSpeculativeDistance + v.length() * dt + (circleDynamic ? gravityTravel : 0.0);
             const Vec2 grow{circle.radius + reach, circle.radius + reach};
             if (!boxes[i].overlaps({circle.position - grow, circle.position + grow})) continue;
-            add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i], makeRoundedPolygon(circle),
-                reach_[i] + reach, bi.material, circle.material);
+            add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i],
+                makeRoundedPolygon(circle), reach_[i] + reach, bi.material, circle.material);
         }
         if (!isDynamic(i)) continue;
         for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
@@ -140,8 +140,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const double reach = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
             const RoundedPolygon shape = makeRoundedPolygon(seg);
             if (!boxes[i].overlaps(boundsOf(shape, reach))) continue;
-            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a, shapes_[i], shape, reach_[i] + reach,
-                bi.material, seg.material);
+            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a, shapes_[i], shape,
+                reach_[i] + reach, bi.material, seg.material);
         }
     }
 }
@@ -170,7 +170,8 @@ void RigidStage::integratePositions(double h) {
     for (RigidState& s : states_) {
         // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
         // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
-        if (s.inverseMass > 0.0 || s.inverseInertia > 0.0) clamps_ += clampRigidMotion(s.velocity, s.omega, speedLimit_, spinLimit_);
+        if (s.inverseMass > 0.0 || s.inverseInertia > 0.0)
+            clamps_ += clampRigidMotion(s.velocity, s.omega, speedLimit_, spinLimit_);
         s.displacement += s.velocity * h;
         if (s.omega == 0.0) continue;
         s.turn += s.omega * h;

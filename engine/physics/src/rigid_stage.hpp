@@ -56,7 +56,9 @@ public:
     /// An axis-aligned bounding box, for the pair test.
     struct Box {
         Vec2 min, max;
-        bool overlaps(const Box& o) const { return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y; }
+        bool overlaps(const Box& o) const {
+            return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y;
+        }
     };
 
 private:
@@ -70,19 +72,21 @@ private:
 
     int circleCount_ = 0;
     double speedLimit_ = 0.0, spinLimit_ = 0.0; // WorldDef::maxTranslation and maxRotation over the step, per second
-    std::int64_t clamps_ = 0;                  // substep clamps this step, added to the stats in finish()
-    int substep_ = 0;     // the substep the next warm start begins
-    double substepTime_ = 0.0; // h, s
+    std::int64_t clamps_ = 0;                   // substep clamps this step, added to the stats in finish()
+    int substep_ = 0;                           // the substep the next warm start begins
+    double substepTime_ = 0.0;                  // h, s
     std::vector<RigidState> states_;
     std::vector<Vec2> startPosition_;
     std::vector<double> startAngle_;
-    std::vector<Vec2> startVelocity_;    // per rigid body, for the energy it began the step with
+    std::vector<Vec2> startVelocity_; // per rigid body, for the energy it began the step with
     std::vector<double> startOmega_;
     std::vector<RigidState> beforeBounce_; // the states restitution began from
-    std::vector<std::uint8_t> onlyFixed_;  // per rigid body: every contact's other side is unmovable, all at one velocity
-    std::vector<std::uint8_t> seenFrame_;  // per rigid body: frame_ holds its partners' velocity
-    std::vector<Vec2> frame_;              // per rigid body: the velocity of its unmovable partners
-    std::vector<double> thickness_;        // per rigid body: half its thinnest width (what a line must be inside it by before its centre crosses), m
+    std::vector<std::uint8_t>
+        onlyFixed_; // per rigid body: every contact's other side is unmovable, all at one velocity
+    std::vector<std::uint8_t> seenFrame_; // per rigid body: frame_ holds its partners' velocity
+    std::vector<Vec2> frame_;             // per rigid body: the velocity of its unmovable partners
+    std::vector<double> thickness_; // per rigid body: half its thinnest width (what a line must be inside it by before
+                                    // its centre crosses), m
     Vec2 gravity_;
     double stepTime_ = 0.0; // dt, s
     int substeps_ = 1;

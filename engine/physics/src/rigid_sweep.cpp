@@ -127,7 +127,8 @@ int RigidStage::sweep(StepContext& ctx, double dt) {
             if (d <= 0.0) continue; // started inside: the solver's contacts push it out
             const Vec2 n = (pa - pb) / d;
             const Vec2 contact = pb + seg.move * (1.0 - t);
-            if (throughDepth(end, atBody.radius + atSeg.radius, n, contact) <= kThroughPerHalfThickness * thick) continue;
+            if (throughDepth(end, atBody.radius + atSeg.radius, n, contact) <= kThroughPerHalfThickness * thick)
+                continue;
             first = t;
             hit = static_cast<int>(k);
         }
@@ -138,7 +139,8 @@ int RigidStage::sweep(StepContext& ctx, double dt) {
     return impacts;
 }
 
-bool RigidStage::resolveSweptHit(StepContext& ctx, std::size_t i, int segment, const SweptShape& shape, double t, double dt) {
+bool RigidStage::resolveSweptHit(StepContext& ctx, std::size_t i, int segment, const SweptShape& shape, double t,
+                                 double dt) {
     RigidBody& body = ctx.bodies[i];
     const Segment& seg = ctx.segments[static_cast<std::size_t>(segment)];
     const SweptShape swept = sweptSegment(seg, dt);
@@ -177,7 +179,8 @@ bool RigidStage::resolveSweptHit(StepContext& ctx, std::size_t i, int segment, c
         double worstVn = 0.0;
         for (int k = 0; k < m.count; ++k) {
             const Vec2 r = m.points[k].point - body.position;
-            const double vn = n.dot(body.velocity + r.perpendicular() * body.angularVelocity - surface(m.points[k].point));
+            const double vn = n.dot(body.velocity + r.perpendicular() * body.angularVelocity -
+                                    surface(m.points[k].point));
             if (vn < worstVn) {
                 worstVn = vn;
                 worst = k;

@@ -42,9 +42,11 @@ void RigidContactCache::remap(const SlotRemap& remap) {
         const int a = remap.bodies(static_cast<int>(e.pair >> 32));
         const bool rigid = (e.pair >> 31 & 1u) == 0;
         const int oldB = static_cast<int>(e.pair & 0x7fffffffu);
-        const int b = rigid ? remap.bodies(oldB)
+        const int b = rigid               ? remap.bodies(oldB)
                       : oldB < oldCircles ? remap.circles(oldB)
-                                          : (remap.segments(oldB - oldCircles) < 0 ? -1 : remap.circles.size + remap.segments(oldB - oldCircles));
+                                          : (remap.segments(oldB - oldCircles) < 0
+                                                 ? -1
+                                                 : remap.circles.size + remap.segments(oldB - oldCircles));
         if (a < 0 || b < 0) continue;
         Entry moved = e;
         moved.pair = static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 |

@@ -104,7 +104,8 @@ void enforceRopes(std::span<Circle> circles, std::span<const Rope> ropes, std::s
         const Vec2 vb = b ? b->velocity : Vec2{};
         Vec2 relative = a.velocity - vb;
         const RopeStart& start = starts[k];
-        const bool freeSwing = start.taut && !hitSomething(impacts, rope.circle) && (!b || !hitSomething(impacts, rope.other));
+        const bool freeSwing = start.taut && !hitSomething(impacts, rope.circle) &&
+                               (!b || !hitSomething(impacts, rope.other));
         // Where the ends would be apart by now: the method's word, or semi-implicit Euler's for a free swing.
         const Vec2 offset = freeSwing ? start.offset + relative * dt : a.position - (b ? b->position : rope.anchor);
         const double distance = offset.length();

@@ -15,13 +15,12 @@ struct Carry {
     bool deferred = false; ///< touching early next step: left in flight, no impact this step
 };
 
-
 } // namespace
 
-int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
-                    std::span<const Circle> circles, std::span<const double> inverseMass,
-                    std::span<const std::uint8_t> isBullet, int circleCount, double threshold,
-                    Vec2 gravity, double dt, double h) {
+int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                    std::span<SolverBody> bodies, std::span<const Circle> circles, std::span<const double> inverseMass,
+                    std::span<const std::uint8_t> isBullet, int circleCount, double threshold, Vec2 gravity, double dt,
+                    double h) {
     bool any = false;
     for (const ContactRecord& r : records) any = any || (r.impactTime >= 0.0 && r.firstTouch >= 0);
     if (!any) return 0; // most steps: nothing to carry, nothing counted
@@ -31,7 +30,8 @@ int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactReco
         const ContactConstraint& c = contacts[k];
         const ContactRecord& r = records[k];
         const double t0 = r.impactTime;
-        if (t0 < 0.0 || t0 > dt + h || r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold) continue;
+        if (t0 < 0.0 || t0 > dt + h || r.firstTouch < 0 || r.bounciness == 0.0 || r.approachSpeed <= threshold)
+            continue;
         const std::size_t a = static_cast<std::size_t>(c.a), b = static_cast<std::size_t>(c.b);
         if (inverseMass[b] > 0.0 || isBullet[a]) continue;
         // The other body (fixed, or kinematic at a constant velocity) keeps its velocity all step.
@@ -75,7 +75,8 @@ int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactReco
         for (const int body : {c.a, c.b}) {
             if (body >= circleCount) continue;
             const int i = carryOf[static_cast<std::size_t>(body)];
-            if (i >= 0 && carries[static_cast<std::size_t>(i)].contact != k) carryOf[static_cast<std::size_t>(body)] = -2;
+            if (i >= 0 && carries[static_cast<std::size_t>(i)].contact != k)
+                carryOf[static_cast<std::size_t>(body)] = -2;
         }
     }
     int carried = 0;

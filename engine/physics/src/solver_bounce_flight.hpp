@@ -20,14 +20,14 @@ namespace rube {
 /// bounces (C > 0, approach above `threshold`) a dynamic circle off a body of infinite mass, the
 /// circle touching nothing else this step: sets the circle's normal velocity and gap to those of the
 /// reflection at t0 followed by free flight to the end of the step, and marks the record `carried`.
-/// Bullets (`isBullet`) are left to the continuous pass. `circles` still hold their velocities at the start of the step; `gravity` in m/s^2;
-/// substeps of `h` seconds. A bounce due within the first substep of the next step (t0 in (dt, dt + h]),
-/// which the last substep's speculative constraint caught early, is undone: the circle is left in
-/// free flight, its contact's impulse zeroed, so the next step bounces it at t0. Returns how many
-/// bounces it carried or deferred.
-int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
-                    std::span<const Circle> circles, std::span<const double> inverseMass,
-                    std::span<const std::uint8_t> isBullet, int circleCount, double threshold,
-                    Vec2 gravity, double dt, double h);
+/// Bullets (`isBullet`) are left to the continuous pass. `circles` still hold their velocities at the start of the
+/// step; `gravity` in m/s^2; substeps of `h` seconds. A bounce due within the first substep of the next step (t0 in
+/// (dt, dt + h]), which the last substep's speculative constraint caught early, is undone: the circle is left in free
+/// flight, its contact's impulse zeroed, so the next step bounces it at t0. Returns how many bounces it carried or
+/// deferred.
+int carryPastImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                    std::span<SolverBody> bodies, std::span<const Circle> circles, std::span<const double> inverseMass,
+                    std::span<const std::uint8_t> isBullet, int circleCount, double threshold, Vec2 gravity, double dt,
+                    double h);
 
 } // namespace rube

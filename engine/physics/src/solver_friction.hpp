@@ -38,27 +38,29 @@ struct FrictionBody {
 
 /// What the contact sweeps need for friction: the terms per contact, and each solver body's arm and omega.
 struct FrictionState {
-    std::span<FrictionTerms> terms;         ///< parallel to the contacts
-    std::span<const FrictionBody> bodies;   ///< per solver body
-    std::span<double> omega;                ///< per solver body, rad/s
+    std::span<FrictionTerms> terms;       ///< parallel to the contacts
+    std::span<const FrictionBody> bodies; ///< per solver body
+    std::span<double> omega;              ///< per solver body, rad/s
 };
 
 /// Each solver body's friction side: circles 0..n-1, then segments (a belt's surface velocity).
-inline void buildFrictionBodies(std::span<const Circle> circles, std::span<const Segment> segments, std::size_t bodyCount,
-                                std::vector<FrictionBody>& out) {
+inline void buildFrictionBodies(std::span<const Circle> circles, std::span<const Segment> segments,
+                                std::size_t bodyCount, std::vector<FrictionBody>& out) {
     out.assign(bodyCount, FrictionBody{});
-    for (std::size_t i = 0; i < circles.size(); ++i) out[i] = {circles[i].radius, circles[i].inverseInertia * circles[i].radius, {}};
+    for (std::size_t i = 0; i < circles.size(); ++i)
+        out[i] = {circles[i].radius, circles[i].inverseInertia * circles[i].radius, {}};
     for (std::size_t s = 0; s < segments.size(); ++s)
         if (segments[s].surfaceSpeed != 0.0)
-            out[circles.size() + s].surfaceVelocity = (segments[s].b - segments[s].a).normalized() * segments[s].surfaceSpeed;
+            out[circles.size() + s].surfaceVelocity = (segments[s].b - segments[s].a).normalized() *
+                                                      segments[s].surfaceSpeed;
 }
 
 /// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1), each
 /// warm started from its pair's impulse at the end of the last step (`records`): a pile's static
 /// friction is held from one step to the next instead of rebuilt from zero, which lets it creep.
 template <class FrictionOf>
-void buildFriction(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records, std::span<const Circle> circles,
-                   std::span<const double> inverseMass, FrictionOf friction,
+void buildFriction(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
+                   std::span<const Circle> circles, std::span<const double> inverseMass, FrictionOf friction,
                    std::vector<FrictionTerms>& out) {
     out.assign(contacts.size(), FrictionTerms{});
     const int circleCount = static_cast<int>(circles.size());
@@ -68,7 +70,8 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
         const ContactConstraint& c = contacts[k];
         FrictionTerms& f = out[k];
         const Circle& ca = circles[static_cast<std::size_t>(c.a)];
-        double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] + ca.radius * ca.radius * ca.inverseInertia;
+        double kt = inverseMass[static_cast<std::size_t>(c.a)] + inverseMass[static_cast<std::size_t>(c.b)] +
+                    ca.radius * ca.radius * ca.inverseInertia;
         if (c.b < circleCount) {
             const Circle& cb = circles[static_cast<std::size_t>(c.b)];
             kt += cb.radius * cb.radius * cb.inverseInertia;
@@ -80,8 +83,9 @@ void buildFriction(std::span<const ContactConstraint> contacts, std::span<const 
 }
 
 /// Applies a tangential impulse lambda t at the contact: on a, and its opposite on b.
-inline void applyFriction(const ContactConstraint& c, const FrictionBody& fa, const FrictionBody& fb, double lambda, double invMassA,
-                          double invMassB, SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
+inline void applyFriction(const ContactConstraint& c, const FrictionBody& fa, const FrictionBody& fb, double lambda,
+                          double invMassA, double invMassB, SolverBody& a, SolverBody& b, double& omegaA,
+                          double& omegaB) {
     const Vec2 p = c.normal.perpendicular() * lambda;
     a.velocity += p * invMassA;
     b.velocity -= p * invMassB;
@@ -91,9 +95,11 @@ inline void applyFriction(const ContactConstraint& c, const FrictionBody& fa, co
 
 /// One friction update at a contact: drives the slip speed to zero within the Coulomb cone
 /// |lambda_t| <= mu lambda_n, using the contact's normal impulse as it stands now.
-inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, const FrictionBody& fa, const FrictionBody& fb, double invMassA,
-                          double invMassB, SolverBody& a, SolverBody& b, double& omegaA, double& omegaB) {
-    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - fb.surfaceVelocity) - fa.arm * omegaA - fb.arm * omegaB;
+inline void solveFriction(const ContactConstraint& c, FrictionTerms& f, const FrictionBody& fa, const FrictionBody& fb,
+                          double invMassA, double invMassB, SolverBody& a, SolverBody& b, double& omegaA,
+                          double& omegaB) {
+    const double vt = c.normal.perpendicular().dot(a.velocity - b.velocity - fb.surfaceVelocity) - fa.arm * omegaA -
+                      fb.arm * omegaB;
     const double limit = f.friction * c.impulse;
     const double total = std::clamp(f.impulse - f.tangentMass * vt, -limit, limit);
     const double delta = total - f.impulse;

@@ -41,9 +41,9 @@ constexpr int kPathPasses = 2;
 
 } // namespace
 
-void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<const Circle> circles,
-                       std::span<const Segment> segments, std::span<const double> inverseMass, Vec2 gravity, double dt, double h,
-                       double restingSpeed) {
+void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                       std::span<const Circle> circles, std::span<const Segment> segments,
+                       std::span<const double> inverseMass, Vec2 gravity, double dt, double h, double restingSpeed) {
     const int circleCount = static_cast<int>(circles.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         ContactConstraint& c = contacts[k];
@@ -70,14 +70,16 @@ void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactR
         double fraction = -1.0;
         for (int pass = 0; pass < kPathPasses; ++pass) {
             const Vec2 move = (w + fall * (0.5 * t)) * horizon;
-            fraction = otherIsCircle ? sweepPointCircle(q0, move, Vec2{}, reach) : sweepPointCapsule(q0, move, seg->a, seg->b, reach);
+            fraction = otherIsCircle ? sweepPointCircle(q0, move, Vec2{}, reach)
+                                     : sweepPointCapsule(q0, move, seg->a, seg->b, reach);
             if (fraction < 0.0) break;
             t = fraction * horizon;
         }
         // Touching within the look-ahead: aim at the time of impact. Not touching: at the time of nearest
         // approach within the look-ahead, so that the start normal's linear gap, shorter than the true one
         // off the line of centres, cannot catch a pair that passes by or touches only later.
-        if (fraction < 0.0) t = nearestApproach(q0, (w + fall * (0.5 * horizon)) * horizon, otherIsCircle ? nullptr : seg) * horizon;
+        if (fraction < 0.0)
+            t = nearestApproach(q0, (w + fall * (0.5 * horizon)) * horizon, otherIsCircle ? nullptr : seg) * horizon;
         const Vec2 atImpact = q0 + (w + fall * (0.5 * (fraction < 0.0 ? horizon : t))) * t;
         double along = 0.0;
         const Vec2 feature = otherIsCircle ? Vec2{} : closestOnSegment(atImpact, seg->a, seg->b, along);

@@ -19,8 +19,8 @@ namespace rube {
 /// pair's relative motion over the step (start velocities, `gravity` against infinite mass, as the
 /// substeps of `h` integrate it) and, when it touches within `dt`, replaces the contact's normal,
 /// gap and kind by those at the time of impact. Contacts with turning segments keep theirs.
-void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<const Circle> circles,
-                       std::span<const Segment> segments, std::span<const double> inverseMass, Vec2 gravity, double dt, double h,
-                       double restingSpeed);
+void aimAtTimeOfImpact(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
+                       std::span<const Circle> circles, std::span<const Segment> segments,
+                       std::span<const double> inverseMass, Vec2 gravity, double dt, double h, double restingSpeed);
 
 } // namespace rube

@@ -40,7 +40,8 @@ PairGeometry circleSegment(const Circle& a, const Segment& s) {
     // A centre exactly on the line takes the line's left normal (+y for a degenerate segment).
     const Vec2 fallback = l2 > 0.0 ? ab.normal() : Vec2{0.0, 1.0};
     const Vec2 n = dist > 0.0 ? d / dist : fallback;
-    return {n, dist - a.radius - s.radius, a.radius + s.radius, (t <= 0.0 || t >= 1.0) ? Other::segmentCap : Other::segment};
+    return {n, dist - a.radius - s.radius, a.radius + s.radius,
+            (t <= 0.0 || t >= 1.0) ? Other::segmentCap : Other::segment};
 }
 
 } // namespace
@@ -52,8 +53,8 @@ const PreviousContact* ContactCache::find(int circle, int other, int circleCount
     return nullptr;
 }
 
-void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount,
-                         int segmentCount) {
+void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses,
+                         int circleCount, int segmentCount) {
     circleCount_ = circleCount;
     segmentCount_ = segmentCount;
     // Counting sort by circle: each circle's pairs become one short run to scan next step.
@@ -73,7 +74,8 @@ void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<
 }
 
 void ContactCache::remap(const SlotRemap& remap) {
-    const int oldCircles = static_cast<int>(remap.circles.to.size()), oldSegments = static_cast<int>(remap.segments.to.size());
+    const int oldCircles = static_cast<int>(remap.circles.to.size()),
+              oldSegments = static_cast<int>(remap.segments.to.size());
     if (circleCount_ != oldCircles || segmentCount_ != oldSegments) {
         circleCount_ = segmentCount_ = -1; // already stale: found by nothing
         return;
@@ -85,7 +87,8 @@ void ContactCache::remap(const SlotRemap& remap) {
     std::vector<PreviousContact> kept;
     for (int owner = 0; owner < oldCircles; ++owner) {
         const int a = remap.circles(owner);
-        for (int k = ownerStart_[static_cast<std::size_t>(owner)]; k < ownerStart_[static_cast<std::size_t>(owner) + 1]; ++k) {
+        for (int k = ownerStart_[static_cast<std::size_t>(owner)]; k < ownerStart_[static_cast<std::size_t>(owner) + 1];
+             ++k) {
             const int old = other_[static_cast<std::size_t>(k)];
             const int b = old < oldCircles ? remap.circles(old) : remap.segments(old - oldCircles);
             if (a < 0 || b < 0) continue;
@@ -97,7 +100,8 @@ void ContactCache::remap(const SlotRemap& remap) {
     segmentCount_ = remap.segments.size;
     ownerStart_.assign(static_cast<std::size_t>(circles) + 1, 0);
     for (const auto& key : keys) ++ownerStart_[static_cast<std::size_t>(key.first) + 1];
-    for (int i = 0; i < circles; ++i) ownerStart_[static_cast<std::size_t>(i) + 1] += ownerStart_[static_cast<std::size_t>(i)];
+    for (int i = 0; i < circles; ++i)
+        ownerStart_[static_cast<std::size_t>(i) + 1] += ownerStart_[static_cast<std::size_t>(i)];
     cursor_.assign(ownerStart_.begin(), ownerStart_.end() - 1);
     other_.resize(keys.size());
     previous_.resize(keys.size());
@@ -125,7 +129,8 @@ void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle>
         // A circle crushed past a thin line or another circle's centre would now be pushed out the
         // far side: a pair that was pushing keeps the side it was touching on (not at a cap, which
         // the circle may legitimately round). Then the gap is measured through the shape: -s - 2R.
-        if (previous && previous->impulse > 0.0 && g.kind != Other::segmentCap && previous->normal.dot(g.normal) < 0.0) {
+        if (previous && previous->impulse > 0.0 && g.kind != Other::segmentCap &&
+            previous->normal.dot(g.normal) < 0.0) {
             g.normal = -g.normal;
             g.gap = -g.gap - 2.0 * g.reach;
         }
@@ -153,7 +158,8 @@ void buildContacts(std::span<const CandidatePair> pairs, std::span<const Circle>
 }
 
 void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records,
-                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight, ContactOrderScratch& scratch) {
+                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight,
+                   ContactOrderScratch& scratch) {
     const std::size_t n = contacts.size();
     if (n == 0) return;
     const int circleCount = static_cast<int>(positions.size());
@@ -185,7 +191,8 @@ void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<Contact
     for (std::size_t k = 0; k < n; ++k) {
         const ContactConstraint& c = contacts[k];
         const bool dynamicPair = c.b < circleCount && inverseMass[static_cast<std::size_t>(c.b)] > 0.0;
-        const double height = dynamicPair ? 0.5 * (positions[c.a].dot(up) + positions[c.b].dot(up)) : positions[c.a].dot(up);
+        const double height = dynamicPair ? 0.5 * (positions[c.a].dot(up) + positions[c.b].dot(up))
+                                          : positions[c.a].dot(up);
         const int layer = std::clamp(static_cast<int>((height - lo) * perLayer), 0, layerCount - 1);
         const int fromTop = layerCount - 1 - layer + (dynamicPair ? 0 : layerCount);
         const int notPushing = c.impulse > 0.0 ? 0 : 1;

@@ -29,7 +29,8 @@ public:
     const PreviousContact* find(int circle, int other, int circleCount, int segmentCount) const;
     /// Remembers the contacts, grouped by circle (a counting sort) for lookup next step, with their
     /// friction impulses when `tangentImpulses` is parallel to them (empty: a step without friction).
-    void store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount, int segmentCount);
+    void store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount,
+               int segmentCount);
     /// Moves the stored pairs to the bodies' new slots, dropping those of bodies that left.
     void remap(const SlotRemap& remap);
 
@@ -65,7 +66,8 @@ struct ContactOrderScratch {
 /// those, the contacts warm started pushing before the others, so the sweeps' branches run in two
 /// long predictable stretches instead of a pattern too long for the CPU to learn.
 void orderContacts(std::vector<ContactConstraint>& contacts, std::vector<ContactRecord>& records,
-                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight, ContactOrderScratch& scratch);
+                   std::span<const Vec2> positions, std::span<const double> inverseMass, Vec2 up, double layerHeight,
+                   ContactOrderScratch& scratch);
 
 /// Appends an Impact for every contact that first touched faster than ctx.restingSpeed and counts
 /// the slower touches as resting contacts; returns the number of impacts. Circles hold the step's end

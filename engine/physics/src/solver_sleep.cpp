@@ -32,8 +32,9 @@ void wakeAll(std::span<Circle> circles) {
 }
 
 bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segment> segments,
-                               std::span<const CandidatePair> pairs, std::span<const double> margins, std::span<const BoundingBox> circleBoxes,
-                               std::span<const BoundingBox> segmentBoxes, std::span<const BoundingBox> bulletPaths) {
+                               std::span<const CandidatePair> pairs, std::span<const double> margins,
+                               std::span<const BoundingBox> circleBoxes, std::span<const BoundingBox> segmentBoxes,
+                               std::span<const BoundingBox> bulletPaths) {
     const int circleCount = static_cast<int>(circles.size());
     asleep_.clear();
     for (int i = 0; i < circleCount; ++i)
@@ -42,7 +43,9 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
     // Reached islands are marked first and woken in one pass at the end, so waking many islands
     // costs one pass over the sleepers, not one per island.
     islandReached_.assign(static_cast<std::size_t>(circleCount), 0);
-    const auto reach = [&](int i) { islandReached_[static_cast<std::size_t>(circles[static_cast<std::size_t>(i)].sleep.island)] = 1; };
+    const auto reach = [&](int i) {
+        islandReached_[static_cast<std::size_t>(circles[static_cast<std::size_t>(i)].sleep.island)] = 1;
+    };
     // Pushed from outside: a sleeper's velocity and spin are exactly zero until something sets them.
     for (const int i : asleep_) {
         const Circle& c = circles[static_cast<std::size_t>(i)];
@@ -54,7 +57,8 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
         if (p.other >= circleCount || !circles[static_cast<std::size_t>(p.other)].sleep.asleep) continue;
         const Circle& a = circles[static_cast<std::size_t>(p.circle)];
         const Circle& b = circles[static_cast<std::size_t>(p.other)];
-        const double reachBoth = a.radius + b.radius + margins[static_cast<std::size_t>(p.circle)] + margins[static_cast<std::size_t>(p.other)];
+        const double reachBoth = a.radius + b.radius + margins[static_cast<std::size_t>(p.circle)] +
+                                 margins[static_cast<std::size_t>(p.other)];
         if ((a.position - b.position).lengthSquared() < reachBoth * reachBoth) reach(p.other);
     }
     // Bullets are filed where they start, kinematic bodies are never the dynamic side of a pair: both
@@ -134,8 +138,9 @@ void SleepIslands::demoteUnheld(std::span<const Circle> circles, std::span<const
         if (!(c.impulse > 0.0 || c.baseSeparation <= 0.0)) continue;
         const Circle& a = circles[static_cast<std::size_t>(c.a)];
         const bool otherIsCircle = c.b < firstSegment;
-        const double otherFriction = otherIsCircle ? circles[static_cast<std::size_t>(c.b)].material.friction
-                                                   : segments[static_cast<std::size_t>(c.b - firstSegment)].material.friction;
+        const double otherFriction = otherIsCircle
+                                         ? circles[static_cast<std::size_t>(c.b)].material.friction
+                                         : segments[static_cast<std::size_t>(c.b - firstSegment)].material.friction;
         const double mu = a.material.friction * otherFriction; // the pair's friction, as the solver's
         offer(c.a, c.normal, mu);
         if (otherIsCircle) offer(c.b, -c.normal, mu);
@@ -152,7 +157,8 @@ void SleepIslands::demoteUnheld(std::span<const Circle> circles, std::span<const
 }
 
 void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> segments,
-                          std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep, Vec2 gravity) {
+                          std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep,
+                          Vec2 gravity) {
     const int circleCount = static_cast<int>(circles.size());
     const double limit2 = sleepSpeed * sleepSpeed;
     state_.assign(static_cast<std::size_t>(circleCount), other);
@@ -180,8 +186,9 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
         };
         for (const ContactConstraint& c : contacts) {
             if (!(c.impulse > 0.0 || c.baseSeparation <= 0.0)) continue;
-            const double otherFriction = c.b < firstSegment ? circles[static_cast<std::size_t>(c.b)].material.friction
-                                                            : segments[static_cast<std::size_t>(c.b - firstSegment)].material.friction;
+            const double otherFriction = c.b < firstSegment
+                                             ? circles[static_cast<std::size_t>(c.b)].material.friction
+                                             : segments[static_cast<std::size_t>(c.b - firstSegment)].material.friction;
             if (circles[static_cast<std::size_t>(c.a)].material.friction * otherFriction <= 0.0) continue;
             grip(c.a);
             if (c.b < firstSegment) grip(c.b);
@@ -216,8 +223,11 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
             if (a == ready && b == ready) parent_[static_cast<std::size_t>(find(c.a))] = find(c.b);
             else if (a == ready && b == awake) block(c.a);
             else if (a == awake && b == ready) block(c.b);
-            else if (a == ready && b == other && c.impulse > 0.0 && movingKinematic(circles[static_cast<std::size_t>(c.b)])) block(c.a);
-        } else if (a == ready && c.impulse > 0.0 && movingKinematic(segments[static_cast<std::size_t>(c.b - circleCount)])) {
+            else if (a == ready && b == other && c.impulse > 0.0 &&
+                     movingKinematic(circles[static_cast<std::size_t>(c.b)]))
+                block(c.a);
+        } else if (a == ready && c.impulse > 0.0 &&
+                   movingKinematic(segments[static_cast<std::size_t>(c.b - circleCount)])) {
             block(c.a);
         }
     }

@@ -31,26 +31,28 @@ void wakeAll(std::span<Circle> circles);
 class SleepIslands {
 public:
     /// Before the step: wakes the islands of sleepers whose velocity or spin was changed from
-    /// outside, that an awake dynamic circle is within contact margins of (`margins` per solver body), that a bullet's path box
+    /// outside, that an awake dynamic circle is within contact margins of (`margins` per solver body), that a bullet's
+    /// path box
     /// (`bulletPaths`) or a moving kinematic body's swept box reaches. `circleBoxes` and
     /// `segmentBoxes` are the step's contact boxes (kinematic ones swept over the step). True when
     /// any island woke: the caller then finds the step's contacts again.
     bool wakeReached(std::span<Circle> circles, std::span<const Segment> segments, std::span<const CandidatePair> pairs,
-                     std::span<const double> margins, std::span<const BoundingBox> circleBoxes, std::span<const BoundingBox> segmentBoxes,
-                     std::span<const BoundingBox> bulletPaths);
+                     std::span<const double> margins, std::span<const BoundingBox> circleBoxes,
+                     std::span<const BoundingBox> segmentBoxes, std::span<const BoundingBox> bulletPaths);
 
     /// After the step: counts how long each awake dynamic circle has been slow, joins circles with a
     /// contact (speculative ones too) into islands, and puts to sleep every island that has been
     /// slow for `timeToSleep`, whose every member its contacts hold against `gravity`, and that is
     /// not carried by a moving kinematic body.
-    void update(std::span<Circle> circles, std::span<const Segment> segments, std::span<const ContactConstraint> contacts,
-                double dt, double sleepSpeed, double timeToSleep, Vec2 gravity);
+    void update(std::span<Circle> circles, std::span<const Segment> segments,
+                std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep,
+                Vec2 gravity);
 
 private:
     /// The directions a circle's contacts can push it in, kept as the nearest to `up` on either side
     /// (in 2-D two rays span every cone the others do: Caratheodory for cones).
     struct HoldRays {
-        Vec2 left, right;                      // unit rays counter-clockwise and clockwise of up
+        Vec2 left, right;                       // unit rays counter-clockwise and clockwise of up
         double leftDot = -2.0, rightDot = -2.0; // their cosines with up; -2: none yet
         void offer(Vec2 up, Vec2 ray);
         bool holds(Vec2 up, double push) const;
@@ -62,11 +64,12 @@ private:
     std::vector<int> parent_;            // union-find over the circles ready to sleep
     std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
     std::vector<std::uint8_t> slowness_; // scratch: per circle, moving, slow, or slow but spinning
-    std::vector<std::uint8_t> blocked_;  // per circle, then per root: touches an awake circle or a moving kinematic body
-    std::vector<int> asleep_;                 // scratch: the sleepers this step
+    std::vector<std::uint8_t> blocked_; // per circle, then per root: touches an awake circle or a moving kinematic body
+    std::vector<int> asleep_;           // scratch: the sleepers this step
     std::vector<std::uint8_t> islandReached_; // scratch: per island (a circle index), something reached it this step
-    std::vector<HoldRays> normalRays_, coneRays_; // scratch: per circle, what its contacts' normals, and friction cones, can push
-    std::vector<int> holding_;                    // scratch: per circle, its contacts that can push
+    std::vector<HoldRays> normalRays_,
+        coneRays_;             // scratch: per circle, what its contacts' normals, and friction cones, can push
+    std::vector<int> holding_; // scratch: per circle, its contacts that can push
 };
 
 } // namespace rube

@@ -47,8 +47,8 @@ void warmStartSweep(std::span<const ContactConstraint> contacts, std::span<Solve
         if constexpr (Friction) {
             const FrictionTerms& f = friction->terms[k];
             if (f.impulse != 0.0) // a contact without friction (mu = 0) never holds an impulse
-                applyFriction(c, friction->bodies[c.a], friction->bodies[c.b], f.impulse, invMassA, invMassB, bodies[c.a], bodies[c.b],
-                              friction->omega[c.a], friction->omega[c.b]);
+                applyFriction(c, friction->bodies[c.a], friction->bodies[c.b], f.impulse, invMassA, invMassB,
+                              bodies[c.a], bodies[c.b], friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }
@@ -66,7 +66,8 @@ namespace {
 /// The soft sweep, with or without friction: one template so the frictionless loop carries no test.
 template <bool Friction>
 void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
-                const double* inverseMass, const Softness (&softness)[2], double h, int substep, double maxPushSpeed, const FrictionState* friction) {
+                const double* inverseMass, const Softness (&softness)[2], double h, int substep, double maxPushSpeed,
+                const FrictionState* friction) {
     const double invH = 1.0 / h;
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         ContactConstraint& c = contacts[k];
@@ -105,7 +106,8 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
             // Friction is bounded by mu times the normal impulse: a contact that does not push and
             // holds no friction impulse (a speculative one, most of a pile's) has none to solve.
             if (f.friction > 0.0 && (c.impulse > 0.0 || f.impulse != 0.0))
-                solveFriction(c, f, friction->bodies[c.a], friction->bodies[c.b], invMassA, invMassB, a, b, friction->omega[c.a], friction->omega[c.b]);
+                solveFriction(c, f, friction->bodies[c.a], friction->bodies[c.b], invMassA, invMassB, a, b,
+                              friction->omega[c.a], friction->omega[c.b]);
         }
     }
 }
@@ -113,9 +115,10 @@ void solveSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
 } // namespace
 
 void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2], double h,
-                   int substep, double maxPushSpeed, const FrictionState* friction) {
-    if (friction) solveSweep<true>(contacts, records, bodies, inverseMass.data(), softness, h, substep, maxPushSpeed, friction);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2],
+                   double h, int substep, double maxPushSpeed, const FrictionState* friction) {
+    if (friction)
+        solveSweep<true>(contacts, records, bodies, inverseMass.data(), softness, h, substep, maxPushSpeed, friction);
     else solveSweep<false>(contacts, records, bodies, inverseMass.data(), softness, h, substep, maxPushSpeed, nullptr);
 }
 
@@ -124,8 +127,8 @@ namespace {
 /// One relax sweep; `Measure` selects whether the gaps are computed from the displacements (and
 /// stored) or read back from the first pass of this substep. Same arithmetic either way.
 template <bool Measure>
-void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                std::span<SolverBody> bodies, const double* inverseMass, double* gaps, double h, int substep) {
+void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> records, std::span<SolverBody> bodies,
+                const double* inverseMass, double* gaps, double h, int substep) {
     const double invH = 1.0 / h;
     const std::size_t n = contacts.size();
     for (std::size_t k = 0; k < n; ++k) {
@@ -147,7 +150,8 @@ void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
         // predicted, the sweep runs ahead on the velocities alone. The same value for every s (-0 and
         // NaN included); one step's relax pass replayed: 7.0 -> 4.8 ns a contact (20,000-ball pile).
         double bias;
-        if (s < 0.0) bias = 0.0; else bias = s * invH;
+        if (s < 0.0) bias = 0.0;
+        else bias = s * invH;
         const double delta = -c.normalMass * (vn + bias);
         const double total = std::max(c.impulse + delta, 0.0);
         const double previous = c.impulse;
@@ -163,14 +167,15 @@ void relaxSweep(std::span<ContactConstraint> contacts, std::span<ContactRecord> 
 } // namespace
 
 void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps, bool measureGaps,
-                   double h, int substep) {
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps,
+                   bool measureGaps, double h, int substep) {
     if (measureGaps) relaxSweep<true>(contacts, records, bodies, inverseMass.data(), gaps.data(), h, substep);
     else relaxSweep<false>(contacts, records, bodies, inverseMass.data(), gaps.data(), h, substep);
 }
 
 void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
-                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold, Vec2 gravityStep) {
+                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold,
+                      Vec2 gravityStep) {
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const ContactConstraint& c = contacts[k];
         const ContactRecord& r = records[k];
@@ -182,7 +187,8 @@ void applyRestitution(std::span<const ContactConstraint> contacts, std::span<con
         // Semi-implicit Euler conserves H = v^2/2 + g.x - (h/2) g.v in flight, not the energy; a bounce
         // flips v and so would lose h |v| of apex height each time. Reflecting u + |g.n| h instead of
         // u restores H exactly for C = 1. Two dynamic circles fall alike: no correction between them.
-        const double invMassA = inverseMass[static_cast<std::size_t>(c.a)], invMassB = inverseMass[static_cast<std::size_t>(c.b)];
+        const double invMassA = inverseMass[static_cast<std::size_t>(c.a)],
+                     invMassB = inverseMass[static_cast<std::size_t>(c.b)];
         const double gravityInto = invMassB > 0.0 ? 0.0 : std::max(-gravityStep.dot(c.normal), 0.0);
         const double target = r.bounciness * (r.approachSpeed + gravityInto);
         // lambda = -m (vn - target), clamped so the accumulated impulse stays >= 0.

@@ -40,22 +40,23 @@ struct alignas(16) ContactConstraint {
     int b = 0;                   ///< solver body index of the other body (circles first, then segments)
     Vec2 normal;                 ///< unit, from b towards a, fixed for the step
     double baseSeparation = 0.0; ///< surface gap at the start of the step (negative: overlap)
-    double normalMass = 0.0;     ///< 1 / (1/mA + 1/mB), the pair's effective mass along n (1/m = 0: infinite mass, lecture 3)
-    double impulse = 0.0;        ///< accumulated normal impulse of the current substep (>= 0)
+    double normalMass =
+        0.0;              ///< 1 / (1/mA + 1/mB), the pair's effective mass along n (1/m = 0: infinite mass, lecture 3)
+    double impulse = 0.0; ///< accumulated normal impulse of the current substep (>= 0)
 };
 
 /// The cold side of a contact: what restitution and the impact record need. A contact that starts
 /// the step pushing (warm started) is resting; one that starts at zero impulse and pushes has touched.
 struct ContactRecord {
-    Other kind = Other::circle; ///< what the circle touches: a circle, a segment's side or its cap
-    double bounciness = 0.0;    ///< product of both materials' bounciness
-    double approachSpeed = 0.0; ///< -vn when the contact first pushed: the speed restitution reverses
-    double touchTime = 0.0;     ///< seconds into the step at which it first touched
-    int firstTouch = -1;        ///< substep in which a contact that started at rest first pushed, or -1
+    Other kind = Other::circle;  ///< what the circle touches: a circle, a segment's side or its cap
+    double bounciness = 0.0;     ///< product of both materials' bounciness
+    double approachSpeed = 0.0;  ///< -vn when the contact first pushed: the speed restitution reverses
+    double touchTime = 0.0;      ///< seconds into the step at which it first touched
+    int firstTouch = -1;         ///< substep in which a contact that started at rest first pushed, or -1
     double tangentImpulse = 0.0; ///< the pair's friction impulse at the end of the last step: friction's warm start
-    double impactTime = -1.0;   ///< seconds into the step at which the swept pair touches (aimAtTimeOfImpact), or -1
-    bool carried = false;       ///< bounced at its time of impact and flown on (carryPastImpact): restitution leaves it
-    Vec2 pointOfImpact;         ///< where a carried bounce touched (the circle has flown on since)
+    double impactTime = -1.0;    ///< seconds into the step at which the swept pair touches (aimAtTimeOfImpact), or -1
+    bool carried = false; ///< bounced at its time of impact and flown on (carryPastImpact): restitution leaves it
+    Vec2 pointOfImpact;   ///< where a carried bounce touched (the circle has flown on since)
 };
 
 struct FrictionState;
@@ -72,20 +73,22 @@ void warmStartContacts(std::span<const ContactConstraint> contacts, std::span<So
 /// that start pushing for the first time this step with `substep` and their approach speed.
 /// With `friction`, each contact's Coulomb friction is solved right after its normal impulse.
 void solveContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2], double h, int substep,
-                   double maxPushSpeed, const FrictionState* friction = nullptr);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, const Softness (&softness)[2],
+                   double h, int substep, double maxPushSpeed, const FrictionState* friction = nullptr);
 
 /// One rigid Gauss-Seidel sweep without position feedback (relax): removes the push-out velocity
 /// the soft solve added, so overlap is corrected in position without gaining energy.
 /// Positions do not move between the relax passes of a substep: the first pass (`gaps` to fill)
 /// measures every contact's gap into `gaps`, the later ones read it back.
 void relaxContacts(std::span<ContactConstraint> contacts, std::span<ContactRecord> records,
-                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps, bool measureGaps, double h, int substep);
+                   std::span<SolverBody> bodies, std::span<const double> inverseMass, std::span<double> gaps,
+                   bool measureGaps, double h, int substep);
 
 /// Restitution once per step for contacts that touched faster than `threshold`: the normal velocity
 /// becomes C times the approach speed (v' = u - C (v - u), lecture 3), the approach taken one substep
 /// of gravity later (`gravityStep` = g h) against infinite mass, so bounces keep their height.
 void applyRestitution(std::span<const ContactConstraint> contacts, std::span<const ContactRecord> records,
-                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold, Vec2 gravityStep);
+                      std::span<SolverBody> bodies, std::span<const double> inverseMass, double threshold,
+                      Vec2 gravityStep);
 
 } // namespace rube

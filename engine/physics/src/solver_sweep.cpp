@@ -15,7 +15,8 @@ constexpr double kClampGap = 1e-4;
 
 /// The box around a straight motion from p to q of a disc of radius r.
 BoundingBox sweptBox(Vec2 p, Vec2 q, double r) {
-    return BoundingBox{{std::min(p.x, q.x) - r, std::min(p.y, q.y) - r}, {std::max(p.x, q.x) + r, std::max(p.y, q.y) + r}};
+    return BoundingBox{{std::min(p.x, q.x) - r, std::min(p.y, q.y) - r},
+                       {std::max(p.x, q.x) + r, std::max(p.y, q.y) + r}};
 }
 
 /// The closest point of segment ab to p, by clamped scalar projection (lecture 5).
@@ -161,7 +162,9 @@ bool ContinuousSweep::resolve(int i, const Hit& hit, const SweepInput& in, StepC
         // exact at that fraction (as aimAtTimeOfImpact does). A circle that contacts pushed did not
         // follow that parabola: its chord stands.
         const Vec2 sag = in.inFlight[static_cast<std::size_t>(i)] ? ctx.def.gravity * (0.5 * dt * dt) : Vec2{};
-        const auto along = [&](double f) { return (move - segMove) + sag * (f - 1.0); }; // p0 + along(f) f is the path at f
+        const auto along = [&](double f) {
+            return (move - segMove) + sag * (f - 1.0);
+        }; // p0 + along(f) f is the path at f
         for (int pass = 0; pass < 2; ++pass) {
             const double refined = sweepPointCapsule(p0, along(t), seg.a, seg.b, ci.radius + seg.radius);
             if (refined < 0.0) break;

@@ -27,14 +27,15 @@ double sweepPointCapsule(Vec2 q0, Vec2 d, Vec2 a, Vec2 b, double reach);
 
 /// What the continuous pass reads besides the world: the step's start positions, margins and grid.
 struct SweepInput {
-    std::span<const Vec2> start;            ///< circle positions at the start of the step
-    std::span<const double> margins;        ///< per circle: how far its contacts looked ahead
-    std::span<const int> bullets;           ///< circles too fast to be filed along their path in the grid
-    std::span<const std::uint8_t> isBullet; ///< per circle
+    std::span<const Vec2> start;             ///< circle positions at the start of the step
+    std::span<const double> margins;         ///< per circle: how far its contacts looked ahead
+    std::span<const int> bullets;            ///< circles too fast to be filed along their path in the grid
+    std::span<const std::uint8_t> isBullet;  ///< per circle
     std::span<const std::uint8_t> isDynamic; ///< per circle
-    const ContactCache& contacts;           ///< this step's contacts: pairs the solver already kept apart
-    std::span<const std::uint8_t> inFlight; ///< per circle: no contact pushed it this step, so gravity alone bent its path
-    int maxCellsPerAxis = 8;                ///< a longer path than this looks at every shape instead
+    const ContactCache& contacts;            ///< this step's contacts: pairs the solver already kept apart
+    std::span<const std::uint8_t>
+        inFlight;            ///< per circle: no contact pushed it this step, so gravity alone bent its path
+    int maxCellsPerAxis = 8; ///< a longer path than this looks at every shape instead
 };
 
 /// The continuous pass, with candidate buffers kept between steps.
@@ -57,7 +58,7 @@ private:
     /// Moves circle i to its time of impact, bounces it and records the impact; true when recorded.
     bool resolve(int i, const Hit& hit, const SweepInput& in, StepContext& ctx, double dt);
 
-    std::vector<int> circles_;  // candidates from the grid
+    std::vector<int> circles_; // candidates from the grid
     std::vector<int> segments_;
 };
 

@@ -4,8 +4,9 @@
 namespace rube {
 
 void TurningContacts::attach(std::span<ContactConstraint> contacts, std::span<const Circle> circles,
-                             std::span<const Segment> segments, std::vector<SolverBody>& bodies, std::vector<double>& inverseMass,
-                             std::vector<double>& omega, std::vector<FrictionBody>& frictionBodies) {
+                             std::span<const Segment> segments, std::vector<SolverBody>& bodies,
+                             std::vector<double>& inverseMass, std::vector<double>& omega,
+                             std::vector<FrictionBody>& frictionBodies) {
     moved_.clear();
     const int circleCount = static_cast<int>(circles.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -18,7 +19,8 @@ void TurningContacts::attach(std::span<ContactConstraint> contacts, std::span<co
         const Vec2 point = circle.position - c.normal * circle.radius;
         moved_.emplace_back(k, c.b);
         if (!frictionBodies.empty()) {
-            const FrictionBody segmentSide = frictionBodies[static_cast<std::size_t>(c.b)]; // a belt's surface moves with it
+            const FrictionBody segmentSide =
+                frictionBodies[static_cast<std::size_t>(c.b)]; // a belt's surface moves with it
             frictionBodies.push_back(segmentSide);
         }
         c.b = static_cast<int>(bodies.size());

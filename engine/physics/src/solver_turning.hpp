@@ -26,9 +26,9 @@ public:
     /// body moving at the segment's velocity at the contact point and points the contact at it;
     /// `inverseMass` and `omega` grow with zeros alike (those bodies have infinite mass and never turn),
     /// and `frictionBodies`, when filled, with the segment's own (a turning belt's surface still moves).
-    void attach(std::span<ContactConstraint> contacts, std::span<const Circle> circles, std::span<const Segment> segments,
-                std::vector<SolverBody>& bodies, std::vector<double>& inverseMass, std::vector<double>& omega,
-                std::vector<FrictionBody>& frictionBodies);
+    void attach(std::span<ContactConstraint> contacts, std::span<const Circle> circles,
+                std::span<const Segment> segments, std::vector<SolverBody>& bodies, std::vector<double>& inverseMass,
+                std::vector<double>& omega, std::vector<FrictionBody>& frictionBodies);
     /// Points every contact `attach` moved back at its segment (the warm-start cache and the impacts name it).
     void detach(std::span<ContactConstraint> contacts);
 

@@ -121,14 +121,16 @@ void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const W
             stats.speedClamps += clampLength(c.velocity, std::max(speedLimit, kCircleRadiiPerStep * c.radius / dt));
     for (RigidBody& b : bodies)
         if (b.motion == Motion::dynamic)
-            stats.speedClamps += clampRigidMotion(b.velocity, b.angularVelocity, speedLimit, b.inverseInertia > 0.0 ? spinLimit : 1e300);
+            stats.speedClamps += clampRigidMotion(b.velocity, b.angularVelocity, speedLimit,
+                                                  b.inverseInertia > 0.0 ? spinLimit : 1e300);
 }
 
-bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot, StepStats& stats,
-                      bool record) {
+bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot,
+                      StepStats& stats, bool record) {
     const std::int64_t before = stats.isolatedBodies;
     // A world that gained bodies since the last record has no last pose for them yet: record now.
-    record = record || snapshot.circlePositions.size() != circles.size() || snapshot.bodyPositions.size() != bodies.size();
+    record = record || snapshot.circlePositions.size() != circles.size() ||
+             snapshot.bodyPositions.size() != bodies.size();
     snapshot.circlePositions.resize(circles.size());
     snapshot.bodyPositions.resize(bodies.size());
     snapshot.bodyAngles.resize(bodies.size());

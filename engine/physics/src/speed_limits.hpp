@@ -30,7 +30,7 @@ void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const W
 /// zero; counted in stats.isolatedBodies (the first one named) and stats.nonFinite set. With `record`
 /// (after a step) it then records every body's pose into `snapshot`; before a step only what a caller
 /// changed is checked. Returns true when it isolated something.
-bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot, StepStats& stats,
-                      bool record);
+bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot,
+                      StepStats& stats, bool record);
 
 } // namespace rube

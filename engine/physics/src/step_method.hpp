@@ -17,14 +17,15 @@ struct StepContext {
     const WorldDef& def;
     std::span<Circle> circles;
     std::span<Segment> segments;
-    std::span<RigidBody> bodies;  ///< boxes and capsules (only the methods that model them move them)
-    double time;                  ///< world time at the start of the step
-    double restingSpeed;          ///< resolved from def.restingSpeed (never 0)
-    std::vector<Impact>& impacts; ///< append every impact resolved, in order
-    StepStats& stats;             ///< add impacts, resting contacts, caps hit; set maxEventsInStep
+    std::span<RigidBody> bodies;        ///< boxes and capsules (only the methods that model them move them)
+    double time;                        ///< world time at the start of the step
+    double restingSpeed;                ///< resolved from def.restingSpeed (never 0)
+    std::vector<Impact>& impacts;       ///< append every impact resolved, in order
+    StepStats& stats;                   ///< add impacts, resting contacts, caps hit; set maxEventsInStep
     std::span<const Pivot> pivots = {}; ///< rigid bodies pinned to the world (the solver models them)
-    std::span<const Rope> ropes = {};   ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
-    bool sleep = false;           ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
+    std::span<const Rope> ropes =
+        {}; ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
+    bool sleep = false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
 };
 
 /// A time-step method: advances every body over dt.

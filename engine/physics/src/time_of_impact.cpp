@@ -52,8 +52,8 @@ std::optional<double> separatingOverlap(const Polynomial& gap, double horizon, T
 
 // |u + v t + acc t^2 / 2| = radiusSum under constant relative acceleration: the quartic
 // |A|^2 t^4 + 2 A.v t^3 + (|v|^2 + 2 A.u) t^2 + 2 u.v t + c = 0 with A = acc / 2.
-std::optional<double> circleCircleTimeOfImpactAccelerated(Vec2 u, Vec2 v, Vec2 acc, double radiusSum,
-                                                          double horizon, TimeOfImpactRule rule) {
+std::optional<double> circleCircleTimeOfImpactAccelerated(Vec2 u, Vec2 v, Vec2 acc, double radiusSum, double horizon,
+                                                          TimeOfImpactRule rule) {
     if (acc == Vec2{}) return circleCircleTimeOfImpact(u, v, radiusSum, horizon, rule);
     const double c = gapTerm(u, radiusSum);
     // Approaching by velocity, or by acceleration when the normal velocity is exactly zero
@@ -110,11 +110,11 @@ std::optional<double> circleCircleTimeOfImpact(Vec2 u, Vec2 v, double radiusSum,
 std::optional<double> lineTimeOfImpact(double a, double b, double radius, double horizon, TimeOfImpactRule rule) {
     if (b <= 0.0) return std::nullopt; // moving away from the line, or along it
     double t = 0.0;
-    if (a >= 0.0) t = a / b;           // the triangle ratio: allowed movement over requested movement
-    else if (a >= -radius) {           // slightly inside, going deeper: rounding after a reset to the POI
+    if (a >= 0.0) t = a / b; // the triangle ratio: allowed movement over requested movement
+    else if (a >= -radius) { // slightly inside, going deeper: rounding after a reset to the POI
         if (rule == TimeOfImpactRule::attempt1) return std::nullopt;
         t = 0.0;
-    } else return std::nullopt;        // the centre is already past the line: keep moving
+    } else return std::nullopt; // the centre is already past the line: keep moving
     if (t <= horizon) return t;
     return std::nullopt;
 }
@@ -151,9 +151,8 @@ std::optional<Collision> circleSegmentCollision(const CircleMotion& circle, Vec2
         // Two-sided: the lecture's two line segments with opposite normals, A to B and B to A.
         for (const Vec2 side : {lineNormal, -lineNormal}) {
             const double distance = (circle.centre - a).dot(side);
-            const std::optional<double> t =
-                lineTimeOfImpactAccelerated(distance - radius, circle.velocity.dot(side),
-                                            circle.acceleration.dot(side), radius, horizon, faceRule);
+            const std::optional<double> t = lineTimeOfImpactAccelerated(
+                distance - radius, circle.velocity.dot(side), circle.acceleration.dot(side), radius, horizon, faceRule);
             if (!t || (face && face->timeOfImpact <= *t)) continue;
             const Vec2 poi = circle.at(*t);
             // The distance along the line of the point of impact, by scalar projection (lecture 5):

@@ -44,8 +44,9 @@ void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, st
     // Lecture 3's axis-aligned blocks (fixed-rotation boxes) are every method's; anything that turns
     // needs the solver's rotation and contact manifolds, and is refused rather than silently ignored.
     if (!movesTurningBodies(method) && anyTurning(bodies, pivots))
-        throw std::logic_error("method '" + std::string(methodName(method)) +
-                               "' cannot move rotating rigid bodies, capsules or pivots: use method 'auto' or 'solver'");
+        throw std::logic_error(
+            "method '" + std::string(methodName(method)) +
+            "' cannot move rotating rigid bodies, capsules or pivots: use method 'auto' or 'solver'");
 }
 
 std::string_view methodName(Method method) { return kMethodNames[static_cast<int>(method)]; }
@@ -57,7 +58,8 @@ std::optional<Method> methodFromName(std::string_view name) {
 }
 
 World::World(const WorldDef& def)
-    : def_(def), method_(makeMethod(def.method)), tables_(std::make_unique<WorldTables>()), finite_(std::make_unique<FiniteSnapshot>()) {}
+    : def_(def), method_(makeMethod(def.method)), tables_(std::make_unique<WorldTables>()),
+      finite_(std::make_unique<FiniteSnapshot>()) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
@@ -95,8 +97,10 @@ SegmentId World::addSegment(const SegmentDef& d) {
     s.path = d.path;
     s.surfaceSpeed = d.surfaceSpeed;
     s.pivotAlong = d.pivotAlong;
-    // A paddle starts turned as its path says at t = 0 (a translating path's first offset waits for the first step, as before).
-    if (d.path >= 0 && static_cast<std::size_t>(d.path) < paths_.size() && paths_[static_cast<std::size_t>(d.path)].turns())
+    // A paddle starts turned as its path says at t = 0 (a translating path's first offset waits for the first step, as
+    // before).
+    if (d.path >= 0 && static_cast<std::size_t>(d.path) < paths_.size() &&
+        paths_[static_cast<std::size_t>(d.path)].turns())
         placeTurningSegment(s, paths_[static_cast<std::size_t>(d.path)], 0.0);
     const int entry = tables_->segments.create(static_cast<int>(segments_.size()));
     segments_.push_back(s);

@@ -105,9 +105,12 @@ void World::remapSlots(const SlotRemap& remap) {
     std::vector<Impact> kept;
     for (Impact impact : impacts_) {
         const bool otherCircle = impact.otherKind == Other::circle;
-        const SlotMap& others = otherCircle ? remap.circles : impact.otherKind == Other::body ? remap.bodies : remap.segments;
+        const SlotMap& others = otherCircle                       ? remap.circles
+                                : impact.otherKind == Other::body ? remap.bodies
+                                                                  : remap.segments;
         const int circle = remap.circles(impact.circle), other = others(impact.other), body = remap.bodies(impact.body);
-        if ((impact.circle >= 0 && circle < 0) || (impact.other >= 0 && other < 0) || (impact.body >= 0 && body < 0)) continue;
+        if ((impact.circle >= 0 && circle < 0) || (impact.other >= 0 && other < 0) || (impact.body >= 0 && body < 0))
+            continue;
         impact.circle = circle;
         impact.other = other;
         impact.body = body;
@@ -125,7 +128,8 @@ void World::leaveCircle(int entry) {
     wakeCircle(c);
     perEntry(tables_->parkedCircles, entry) = circles_[static_cast<std::size_t>(slot)];
     perEntry(tables_->circleEscaped, entry) = escaped_[static_cast<std::size_t>(slot)];
-    SlotRemap remap{table.leave(entry), identity(static_cast<int>(segments_.size())), identity(static_cast<int>(bodies_.size()))};
+    SlotRemap remap{table.leave(entry), identity(static_cast<int>(segments_.size())),
+                    identity(static_cast<int>(bodies_.size()))};
     eraseSlot(circles_, slot);
     remapSlots(remap);
 }
@@ -135,7 +139,8 @@ void World::leaveBody(int entry) {
     const int slot = table.entry(entry).slot;
     perEntry(tables_->parkedBodies, entry) = bodies_[static_cast<std::size_t>(slot)];
     perEntry(tables_->bodyEscaped, entry) = escapedBodies_[static_cast<std::size_t>(slot)];
-    SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())), table.leave(entry)};
+    SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())),
+                    table.leave(entry)};
     eraseSlot(bodies_, slot);
     remapSlots(remap);
 }
@@ -147,13 +152,15 @@ void World::syncJoints() {
     for (int e = 0; e < ropes.entryCount(); ++e) {
         HandleTable::Entry& entry = ropes.entry(e);
         if (!entry.live) continue;
-        const Rope& rope = entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)] : tables_->parkedRopes[static_cast<std::size_t>(e)];
+        const Rope& rope = entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)]
+                                         : tables_->parkedRopes[static_cast<std::size_t>(e)];
         const bool acts = tables_->ropeOn[static_cast<std::size_t>(e)] && isEnabled(rope.circleId) &&
                           (rope.otherId.isNull() || isEnabled(rope.otherId));
         if (entry.enabled && !acts) {
             const int slot = entry.slot;
             perEntry(tables_->parkedRopes, e) = ropes_[static_cast<std::size_t>(slot)];
-            tables_->parkedRopes[static_cast<std::size_t>(e)].circle = tables_->parkedRopes[static_cast<std::size_t>(e)].other = -1;
+            tables_->parkedRopes[static_cast<std::size_t>(e)].circle = tables_->parkedRopes[static_cast<std::size_t>(e)]
+                                                                           .other = -1;
             ropes.leave(e);
             eraseSlot(ropes_, slot);
         } else if (!entry.enabled && acts) {
@@ -169,7 +176,8 @@ void World::syncJoints() {
     for (int e = 0; e < pivots.entryCount(); ++e) {
         HandleTable::Entry& entry = pivots.entry(e);
         if (!entry.live) continue;
-        const Pivot& pivot = entry.enabled ? pivots_[static_cast<std::size_t>(entry.slot)] : tables_->parkedPivots[static_cast<std::size_t>(e)];
+        const Pivot& pivot = entry.enabled ? pivots_[static_cast<std::size_t>(entry.slot)]
+                                           : tables_->parkedPivots[static_cast<std::size_t>(e)];
         const bool acts = tables_->pivotOn[static_cast<std::size_t>(e)] && isEnabled(pivot.bodyId);
         if (entry.enabled && !acts) {
             const int slot = entry.slot;
@@ -205,7 +213,8 @@ void World::remove(SegmentId id) {
     HandleTable::Entry& entry = tables_->segments.at(id.index, id.generation, "segment");
     if (entry.enabled) {
         const int slot = entry.slot;
-        SlotRemap remap{identity(static_cast<int>(circles_.size())), tables_->segments.leave(id.index), identity(static_cast<int>(bodies_.size()))};
+        SlotRemap remap{identity(static_cast<int>(circles_.size())), tables_->segments.leave(id.index),
+                        identity(static_cast<int>(bodies_.size()))};
         wakeNear(segments_[static_cast<std::size_t>(slot)]); // what rested on it falls
         eraseSlot(segments_, slot);
         remapSlots(remap);
@@ -254,12 +263,14 @@ void World::setEnabled(CircleId id, bool enabled) {
         leaveCircle(id.index);
     } else {
         HandleTable& table = tables_->circles;
-        SlotRemap remap{table.enter(id.index), identity(static_cast<int>(segments_.size())), identity(static_cast<int>(bodies_.size()))};
+        SlotRemap remap{table.enter(id.index), identity(static_cast<int>(segments_.size())),
+                        identity(static_cast<int>(bodies_.size()))};
         Circle c = tables_->parkedCircles[static_cast<std::size_t>(id.index)];
         c.sleep = SleepState{}; // back awake: its island is gone
         insertSlot(circles_, table.entry(id.index).slot, c);
         remapSlots(remap);
-        escaped_[static_cast<std::size_t>(table.entry(id.index).slot)] = tables_->circleEscaped[static_cast<std::size_t>(id.index)];
+        escaped_[static_cast<std::size_t>(table.entry(id.index).slot)] =
+            tables_->circleEscaped[static_cast<std::size_t>(id.index)];
     }
     syncJoints();
 }
@@ -289,10 +300,12 @@ void World::setEnabled(BodyId id, bool enabled) {
         leaveBody(id.index);
     } else {
         HandleTable& table = tables_->bodies;
-        SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())), table.enter(id.index)};
+        SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())),
+                        table.enter(id.index)};
         insertSlot(bodies_, table.entry(id.index).slot, tables_->parkedBodies[static_cast<std::size_t>(id.index)]);
         remapSlots(remap);
-        escapedBodies_[static_cast<std::size_t>(table.entry(id.index).slot)] = tables_->bodyEscaped[static_cast<std::size_t>(id.index)];
+        escapedBodies_[static_cast<std::size_t>(table.entry(id.index).slot)] =
+            tables_->bodyEscaped[static_cast<std::size_t>(id.index)];
     }
     syncJoints();
 }
@@ -311,7 +324,9 @@ void World::setEnabled(PivotId id, bool enabled) {
 
 void World::cutRope(RopeId id) {
     HandleTable::Entry& entry = tables_->ropes.at(id.index, id.generation, "rope");
-    (entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)] : tables_->parkedRopes[static_cast<std::size_t>(id.index)]).cut = true;
+    (entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)]
+                   : tables_->parkedRopes[static_cast<std::size_t>(id.index)])
+        .cut = true;
 }
 
 // ---- lookups ----
@@ -336,23 +351,28 @@ bool World::isEnabled(PivotId id) const {
 
 const Circle& World::circle(CircleId id) const {
     const HandleTable::Entry& e = tables_->circles.at(id.index, id.generation, "circle");
-    return e.enabled ? circles_[static_cast<std::size_t>(e.slot)] : tables_->parkedCircles[static_cast<std::size_t>(id.index)];
+    return e.enabled ? circles_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedCircles[static_cast<std::size_t>(id.index)];
 }
 const Segment& World::segment(SegmentId id) const {
     const HandleTable::Entry& e = tables_->segments.at(id.index, id.generation, "segment");
-    return e.enabled ? segments_[static_cast<std::size_t>(e.slot)] : tables_->parkedSegments[static_cast<std::size_t>(id.index)];
+    return e.enabled ? segments_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedSegments[static_cast<std::size_t>(id.index)];
 }
 const RigidBody& World::body(BodyId id) const {
     const HandleTable::Entry& e = tables_->bodies.at(id.index, id.generation, "rigid body");
-    return e.enabled ? bodies_[static_cast<std::size_t>(e.slot)] : tables_->parkedBodies[static_cast<std::size_t>(id.index)];
+    return e.enabled ? bodies_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedBodies[static_cast<std::size_t>(id.index)];
 }
 const Rope& World::rope(RopeId id) const {
     const HandleTable::Entry& e = tables_->ropes.at(id.index, id.generation, "rope");
-    return e.enabled ? ropes_[static_cast<std::size_t>(e.slot)] : tables_->parkedRopes[static_cast<std::size_t>(id.index)];
+    return e.enabled ? ropes_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedRopes[static_cast<std::size_t>(id.index)];
 }
 const Pivot& World::pivot(PivotId id) const {
     const HandleTable::Entry& e = tables_->pivots.at(id.index, id.generation, "pivot");
-    return e.enabled ? pivots_[static_cast<std::size_t>(e.slot)] : tables_->parkedPivots[static_cast<std::size_t>(id.index)];
+    return e.enabled ? pivots_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedPivots[static_cast<std::size_t>(id.index)];
 }
 
 int World::slot(CircleId id) const { return tables_->circles.at(id.index, id.generation, "circle").slot; }
@@ -367,10 +387,18 @@ BodyId World::bodyId(int slot) const { return idOfSlot<BodyId>(tables_->bodies, 
 RopeId World::ropeId(int slot) const { return idOfSlot<RopeId>(tables_->ropes, slot); }
 PivotId World::pivotId(int slot) const { return idOfSlot<PivotId>(tables_->pivots, slot); }
 
-std::uint64_t World::userValue(CircleId id) const { return tables_->circles.at(id.index, id.generation, "circle").userValue; }
-std::uint64_t World::userValue(BodyId id) const { return tables_->bodies.at(id.index, id.generation, "rigid body").userValue; }
-void World::setUserValue(CircleId id, std::uint64_t value) { tables_->circles.at(id.index, id.generation, "circle").userValue = value; }
-void World::setUserValue(BodyId id, std::uint64_t value) { tables_->bodies.at(id.index, id.generation, "rigid body").userValue = value; }
+std::uint64_t World::userValue(CircleId id) const {
+    return tables_->circles.at(id.index, id.generation, "circle").userValue;
+}
+std::uint64_t World::userValue(BodyId id) const {
+    return tables_->bodies.at(id.index, id.generation, "rigid body").userValue;
+}
+void World::setUserValue(CircleId id, std::uint64_t value) {
+    tables_->circles.at(id.index, id.generation, "circle").userValue = value;
+}
+void World::setUserValue(BodyId id, std::uint64_t value) {
+    tables_->bodies.at(id.index, id.generation, "rigid body").userValue = value;
+}
 
 void World::nameFirstIsolated() {
     if (stats_.firstIsolatedKind == Other::body) stats_.firstIsolatedBody = bodyId(stats_.firstIsolatedSlot);

@@ -54,7 +54,8 @@ SlotMap HandleTable::leave(int index) {
     for (int s = 0; s < count; ++s) map.to[static_cast<std::size_t>(s)] = s < e.slot ? s : s == e.slot ? -1 : s - 1;
     map.size = count - 1;
     slotEntries_.erase(slotEntries_.begin() + e.slot);
-    for (int s = e.slot; s < map.size; ++s) entries_[static_cast<std::size_t>(slotEntries_[static_cast<std::size_t>(s)])].slot = s;
+    for (int s = e.slot; s < map.size; ++s)
+        entries_[static_cast<std::size_t>(slotEntries_[static_cast<std::size_t>(s)])].slot = s;
     e.slot = -1;
     e.enabled = false;
     return map;
@@ -73,7 +74,8 @@ SlotMap HandleTable::enter(int index) {
     for (int s = 0; s < count; ++s) map.to[static_cast<std::size_t>(s)] = s < slot ? s : s + 1;
     map.size = count + 1;
     slotEntries_.insert(at, index);
-    for (int s = slot; s < map.size; ++s) entries_[static_cast<std::size_t>(slotEntries_[static_cast<std::size_t>(s)])].slot = s;
+    for (int s = slot; s < map.size; ++s)
+        entries_[static_cast<std::size_t>(slotEntries_[static_cast<std::size_t>(s)])].slot = s;
     e.enabled = true;
     return map;
 }

@@ -21,7 +21,9 @@ struct SlotMap {
     std::vector<int> to;
     int size = 0;
     /// The new slot of `old`, or -1 (also for -1).
-    int operator()(int old) const { return old < 0 || old >= static_cast<int>(to.size()) ? -1 : to[static_cast<std::size_t>(old)]; }
+    int operator()(int old) const {
+        return old < 0 || old >= static_cast<int>(to.size()) ? -1 : to[static_cast<std::size_t>(old)];
+    }
     /// True when slot numbers changed.
     bool empty() const { return to.empty() && size == 0; }
 };
@@ -47,9 +49,9 @@ class HandleTable {
 public:
     struct Entry {
         std::uint32_t generation = 1;
-        bool live = false;         ///< made and not removed
-        bool enabled = true;       ///< in the array (a disabled thing waits outside it)
-        int slot = -1;             ///< its slot in the array while enabled, else -1
+        bool live = false;          ///< made and not removed
+        bool enabled = true;        ///< in the array (a disabled thing waits outside it)
+        int slot = -1;              ///< its slot in the array while enabled, else -1
         std::uint64_t sequence = 0; ///< insertion order: where it goes back when enabled again
         std::uint64_t userValue = 0;
         double gravityScale = 1.0; ///< kept while disabled (circles and rigid bodies)
@@ -93,14 +95,14 @@ Id handleOf(HandleTable& table, int index) {
 /// The world's tables, and the state of what waits outside the arrays (by table entry).
 struct WorldTables {
     HandleTable circles, segments, bodies, ropes, pivots;
-    std::vector<Circle> parkedCircles;     ///< per circle entry: its state while disabled
-    std::vector<Segment> parkedSegments;   ///< per segment entry, likewise
-    std::vector<RigidBody> parkedBodies;   ///< per body entry, likewise
-    std::vector<Rope> parkedRopes;         ///< per rope entry: the rope while it does not act
-    std::vector<Pivot> parkedPivots;       ///< per pivot entry, likewise
-    std::vector<std::uint8_t> ropeOn, pivotOn; ///< per entry: its own switch (setEnabled)
+    std::vector<Circle> parkedCircles;                    ///< per circle entry: its state while disabled
+    std::vector<Segment> parkedSegments;                  ///< per segment entry, likewise
+    std::vector<RigidBody> parkedBodies;                  ///< per body entry, likewise
+    std::vector<Rope> parkedRopes;                        ///< per rope entry: the rope while it does not act
+    std::vector<Pivot> parkedPivots;                      ///< per pivot entry, likewise
+    std::vector<std::uint8_t> ropeOn, pivotOn;            ///< per entry: its own switch (setEnabled)
     std::vector<std::uint8_t> circleEscaped, bodyEscaped; ///< per entry: escaped before it was disabled (counted once)
-    std::vector<int> thrusterSlots;        ///< per thruster: its circle's slot this step, -1 none
+    std::vector<int> thrusterSlots;                       ///< per thruster: its circle's slot this step, -1 none
 };
 
 /// Grows a per-entry vector to hold `index`.

@@ -8,12 +8,14 @@ namespace rube {
 
 Circle& World::circleState(CircleId id) {
     const HandleTable::Entry& e = tables_->circles.at(id.index, id.generation, "circle");
-    return e.enabled ? circles_[static_cast<std::size_t>(e.slot)] : tables_->parkedCircles[static_cast<std::size_t>(id.index)];
+    return e.enabled ? circles_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedCircles[static_cast<std::size_t>(id.index)];
 }
 
 RigidBody& World::bodyState(BodyId id) {
     const HandleTable::Entry& e = tables_->bodies.at(id.index, id.generation, "rigid body");
-    return e.enabled ? bodies_[static_cast<std::size_t>(e.slot)] : tables_->parkedBodies[static_cast<std::size_t>(id.index)];
+    return e.enabled ? bodies_[static_cast<std::size_t>(e.slot)]
+                     : tables_->parkedBodies[static_cast<std::size_t>(id.index)];
 }
 
 void World::wakeCircle(const Circle& c) {

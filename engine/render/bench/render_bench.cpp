@@ -49,7 +49,8 @@ Options parse(int argc, char** argv) {
         else if (arg == "--circles") options.circles = std::stoi(value());
         else if (arg == "--size") {
             std::string v = value();
-            if (std::sscanf(v.c_str(), "%dx%d", &options.size.width, &options.size.height) != 2) throw std::runtime_error("--size wants WxH");
+            if (std::sscanf(v.c_str(), "%dx%d", &options.size.width, &options.size.height) != 2)
+                throw std::runtime_error("--size wants WxH");
         } else if (arg == "--gl") {
             const std::string name = value();
             if (name == "all") options.backends.clear();
@@ -188,7 +189,8 @@ int main(int argc, char** argv) try {
     }
     // One back end at a time: glad's function table is global, and each context loads its own.
     for (GlBackend backend : backends) bench(options, backend, balls, folder / std::string(glBackendName(backend)));
-    std::printf("  frames in       %s%s\n", folder.string().c_str(), options.keep || !options.out.empty() ? "" : " (removed)");
+    std::printf("  frames in       %s%s\n", folder.string().c_str(),
+                options.keep || !options.out.empty() ? "" : " (removed)");
     if (!options.keep && options.out.empty()) std::filesystem::remove_all(folder);
     return 0;
 } catch (const std::exception& e) {

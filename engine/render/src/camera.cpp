@@ -17,9 +17,7 @@ Camera Camera::fitting(Rect world, FrameSize frame, float margin) {
     return camera;
 }
 
-float Camera::pixelsPerMetre(FrameSize frame) const {
-    return static_cast<float>(frame.height) / viewHeight;
-}
+float Camera::pixelsPerMetre(FrameSize frame) const { return static_cast<float>(frame.height) / viewHeight; }
 
 Point Camera::toPixels(Point world, FrameSize frame) const {
     float scale = pixelsPerMetre(frame);

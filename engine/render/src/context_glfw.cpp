@@ -123,7 +123,9 @@ public:
     void setInputListener(InputListener* listener) override { listener_ = listener; }
 
 private:
-    static WindowContext& of(GLFWwindow* window) { return *static_cast<WindowContext*>(glfwGetWindowUserPointer(window)); }
+    static WindowContext& of(GLFWwindow* window) {
+        return *static_cast<WindowContext*>(glfwGetWindowUserPointer(window));
+    }
 
     // The callbacks only translate: GLFW's codes into the renderer's, window coordinates into
     // framebuffer pixels (they differ by the content scale on high-DPI screens).

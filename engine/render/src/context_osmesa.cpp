@@ -20,13 +20,20 @@ class OsmesaContext final : public RenderContext {
 public:
     explicit OsmesaContext(FrameSize size) : size_(size) {
         const int attributes[] = {
-            OSMESA_FORMAT, OSMESA_RGBA,
-            OSMESA_DEPTH_BITS, 0, // 2D in painter's order: no depth or stencil buffer to clear
-            OSMESA_STENCIL_BITS, 0,
-            OSMESA_ACCUM_BITS, 0,
-            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-            OSMESA_CONTEXT_MINOR_VERSION, 3,
+            OSMESA_FORMAT,
+            OSMESA_RGBA,
+            OSMESA_DEPTH_BITS,
+            0, // 2D in painter's order: no depth or stencil buffer to clear
+            OSMESA_STENCIL_BITS,
+            0,
+            OSMESA_ACCUM_BITS,
+            0,
+            OSMESA_PROFILE,
+            OSMESA_CORE_PROFILE,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            3,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            3,
             0,
         };
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);

@@ -40,7 +40,8 @@ std::vector<std::uint8_t> differingMask(const Image& actual, const Image& expect
             int same = channelDifference(actual.pixel(x, y), expected.pixel(x, y));
             largest = std::max(largest, same);
             if (same <= options.channelTolerance) continue;
-            bool differs = !hasMatchNear(actual, expected, x, y, options) || !hasMatchNear(expected, actual, x, y, options);
+            bool differs = !hasMatchNear(actual, expected, x, y, options) ||
+                           !hasMatchNear(expected, actual, x, y, options);
             mask[static_cast<std::size_t>(y) * actual.width + x] = differs ? 1 : 0;
         }
     }
@@ -68,7 +69,8 @@ Comparison compareImages(const Image& actual, const Image& expected, const Compa
     result.totalPixels = static_cast<std::int64_t>(actual.width) * actual.height;
     std::vector<std::uint8_t> mask = differingMask(actual, expected, options, &result.largestDifference);
     result.differingPixels = std::count(mask.begin(), mask.end(), std::uint8_t{1});
-    result.matches = static_cast<double>(result.differingPixels) <= options.maxDifferingShare * static_cast<double>(result.totalPixels);
+    result.matches = static_cast<double>(result.differingPixels) <=
+                     options.maxDifferingShare * static_cast<double>(result.totalPixels);
     return result;
 }
 

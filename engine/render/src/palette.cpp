@@ -54,7 +54,8 @@ Palette Palette::parse(std::string_view text) {
         text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
         ++lineNumber;
         auto fail = [&](const std::string& why) {
-            throw std::invalid_argument("palette line " + std::to_string(lineNumber) + ": " + why + ": " + std::string(line));
+            throw std::invalid_argument("palette line " + std::to_string(lineNumber) + ": " + why + ": " +
+                                        std::string(line));
         };
         // A '#' outside quotes starts a comment; inside quotes it starts the colour.
         auto quote = line.find('"');
@@ -73,8 +74,10 @@ Palette Palette::parse(std::string_view text) {
         }
         std::string_view value = trim(line.substr(equals + 1));
         auto closing = value.find('"', 1);
-        if (value.size() < 2 || value[0] != '"' || closing == std::string_view::npos) fail("value must be a quoted colour");
-        if (!trim(value.substr(closing + 1)).empty() && trim(value.substr(closing + 1))[0] != '#') fail("unexpected text after the colour");
+        if (value.size() < 2 || value[0] != '"' || closing == std::string_view::npos)
+            fail("value must be a quoted colour");
+        if (!trim(value.substr(closing + 1)).empty() && trim(value.substr(closing + 1))[0] != '#')
+            fail("unexpected text after the colour");
         try {
             Color colour = parseColor(value.substr(1, closing - 1));
             if (!palette.colours_.emplace(std::string(name), colour).second) fail("name defined twice");
@@ -99,9 +102,7 @@ Color Palette::operator[](std::string_view name) const {
     return it->second;
 }
 
-bool Palette::contains(std::string_view name) const {
-    return colours_.find(name) != colours_.end();
-}
+bool Palette::contains(std::string_view name) const { return colours_.find(name) != colours_.end(); }
 
 std::vector<std::string> Palette::names() const {
     std::vector<std::string> result;

@@ -38,7 +38,8 @@ void* allocateBlock(std::size_t size) {
     BlockHeader** best = nullptr;
     if (size >= BlockCache::smallest) {
         for (BlockHeader*& block : blockCache.blocks) {
-            if (block != nullptr && block->capacity >= size && (best == nullptr || block->capacity < (*best)->capacity)) best = &block;
+            if (block != nullptr && block->capacity >= size && (best == nullptr || block->capacity < (*best)->capacity))
+                best = &block;
         }
     }
     if (best != nullptr) {
@@ -140,9 +141,7 @@ namespace {
 // five filters per row (the default), which costs more than the compression itself.
 [[maybe_unused]] const bool upFilterForced = (stbi_write_force_png_filter = 2, true);
 
-std::string reason(int error) {
-    return std::generic_category().message(error);
-}
+std::string reason(int error) { return std::generic_category().message(error); }
 
 } // namespace
 
@@ -164,11 +163,13 @@ void Image::resize(int newWidth, int newHeight) {
 }
 
 std::vector<std::uint8_t> encodePng(const Image& image) {
-    if (image.width <= 0 || image.height <= 0 || image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
         throw std::invalid_argument("encodePng: the image is empty or its size does not match its pixels");
     }
     int length = 0;
-    unsigned char* png = stbi_write_png_to_mem(image.rgb.data(), image.width * 3, image.width, image.height, 3, &length);
+    unsigned char* png = stbi_write_png_to_mem(image.rgb.data(), image.width * 3, image.width, image.height, 3,
+                                               &length);
     if (png == nullptr) throw std::runtime_error("encodePng: out of memory");
     std::vector<std::uint8_t> bytes(png, png + length);
     STBIW_FREE(png);
@@ -207,9 +208,7 @@ void writeFileAtomically(const std::filesystem::path& path, const std::vector<st
     }
 }
 
-void writePng(const std::filesystem::path& path, const Image& image) {
-    writeFileAtomically(path, encodePng(image));
-}
+void writePng(const std::filesystem::path& path, const Image& image) { writeFileAtomically(path, encodePng(image)); }
 
 Image readPng(const std::filesystem::path& path) {
     std::FILE* file = std::fopen(path.c_str(), "rb");

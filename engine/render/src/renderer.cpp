@@ -16,7 +16,7 @@ struct Renderer::Gpu {
     GLuint vertexArray = 0;
     GLuint instanceBuffer = 0;
     GLint frameSizeLocation = -1;
-    std::vector<ShapeInstance> instances;     // reused every frame
+    std::vector<ShapeInstance> instances; // reused every frame
 };
 
 namespace {
@@ -63,9 +63,7 @@ Renderer::~Renderer() {
     glDeleteProgram(gpu_->program);
 }
 
-FrameSize Renderer::frameSize() const {
-    return context_.size();
-}
+FrameSize Renderer::frameSize() const { return context_.size(); }
 
 void Renderer::draw(const DrawList& list, const Camera& camera) {
     context_.makeCurrent();
@@ -97,9 +95,7 @@ void Renderer::draw(const DrawList& list, const Camera& camera) {
     stats_.drawCalls = 1;
 }
 
-void Renderer::readPixels(Image& into) {
-    context_.readPixels(into);
-}
+void Renderer::readPixels(Image& into) { context_.readPixels(into); }
 
 Image Renderer::render(const DrawList& list, const Camera& camera) {
     draw(list, camera);

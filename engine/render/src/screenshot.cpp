@@ -37,7 +37,8 @@ ScreenshotCheck checkScreenshot(const Image& actual, const std::filesystem::path
         writePng(goldenPath, actual);
         check.passed = true;
         check.goldenWritten = true;
-        check.message = "UPDATE_SCREENSHOTS=1: wrote the golden " + goldenPath.string() + "; look at it before committing";
+        check.message = "UPDATE_SCREENSHOTS=1: wrote the golden " + goldenPath.string() +
+                        "; look at it before committing";
         return check;
     }
 
@@ -59,8 +60,8 @@ ScreenshotCheck checkScreenshot(const Image& actual, const std::filesystem::path
             std::filesystem::remove(failureFolder / (stem + kind), error);
         }
         check.passed = true;
-        check.message = goldenPath.filename().string() + " matches (" + std::to_string(check.comparison.differingPixels) +
-                        " pixels differ)";
+        check.message = goldenPath.filename().string() + " matches (" +
+                        std::to_string(check.comparison.differingPixels) + " pixels differ)";
         return check;
     }
 
@@ -70,18 +71,20 @@ ScreenshotCheck checkScreenshot(const Image& actual, const std::filesystem::path
     writePng(check.expectedPath, expected);
     if (!check.comparison.sameSize) {
         check.message = "frame is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) + " but " +
-                        goldenPath.string() + " is " + std::to_string(expected.width) + "x" + std::to_string(expected.height) +
-                        "; see " + check.actualPath.string() + " and " + check.expectedPath.string();
+                        goldenPath.string() + " is " + std::to_string(expected.width) + "x" +
+                        std::to_string(expected.height) + "; see " + check.actualPath.string() + " and " +
+                        check.expectedPath.string();
         return check;
     }
     check.diffPath = failureFolder / (stem + ".diff.png");
     writePng(check.diffPath, diffImage(actual, expected, options));
-    check.message = std::to_string(check.comparison.differingPixels) + " of " + std::to_string(check.comparison.totalPixels) +
-                    " pixels (" + percent(check.comparison.differingShare()) + ", allowed " +
-                    percent(options.maxDifferingShare) + ") differ from " + goldenPath.string() +
-                    " by more than " + std::to_string(options.channelTolerance) + "/255 within " +
-                    std::to_string(options.shift) + " px; see " + check.actualPath.string() + ", " +
-                    check.expectedPath.string() + " and " + check.diffPath.string() + " (differences in red)";
+    check.message = std::to_string(check.comparison.differingPixels) + " of " +
+                    std::to_string(check.comparison.totalPixels) + " pixels (" +
+                    percent(check.comparison.differingShare()) + ", allowed " + percent(options.maxDifferingShare) +
+                    ") differ from " + goldenPath.string() + " by more than " +
+                    std::to_string(options.channelTolerance) + "/255 within " + std::to_string(options.shift) +
+                    " px; see " + check.actualPath.string() + ", " + check.expectedPath.string() + " and " +
+                    check.diffPath.string() + " (differences in red)";
     return check;
 }
 

@@ -24,7 +24,7 @@ enum class ShapeKind : std::uint32_t {
 struct ShapeInstance {
     float geomA[4] = {0, 0, 0, 0};
     float geomB[4] = {0, 0, 0, 0};
-    float outlineWidth = 0.0f;     ///< pixels inside the edge drawn in the outline colour
+    float outlineWidth = 0.0f; ///< pixels inside the edge drawn in the outline colour
     std::uint32_t kindAndFlags = 0;
     Color fill;
     Color outline;

@@ -63,7 +63,8 @@ struct Builder {
         for (Point p : points) {
             if (chain.empty() || std::hypot(p.x - chain.back().x, p.y - chain.back().y) >= 0.5f) chain.push_back(p);
         }
-        if (closed && chain.size() > 2 && std::hypot(chain.front().x - chain.back().x, chain.front().y - chain.back().y) < 0.5f) {
+        if (closed && chain.size() > 2 &&
+            std::hypot(chain.front().x - chain.back().x, chain.front().y - chain.back().y) < 0.5f) {
             chain.pop_back();
         }
         const std::size_t n = chain.size();
@@ -104,7 +105,8 @@ struct Builder {
 
     void triangle(Point p0, Point p1, Point p2, std::uint8_t boundaryEdges, Color color) {
         ShapeInstance s;
-        s.kindAndFlags = static_cast<std::uint32_t>(ShapeKind::triangle) | (static_cast<std::uint32_t>(boundaryEdges & 7u) << 8);
+        s.kindAndFlags = static_cast<std::uint32_t>(ShapeKind::triangle) |
+                         (static_cast<std::uint32_t>(boundaryEdges & 7u) << 8);
         s.geomA[0] = p0.x;
         s.geomA[1] = p0.y;
         s.geomA[2] = p1.x;
@@ -161,7 +163,8 @@ struct Builder {
         auto points = list.points();
         auto triangles = list.triangles().subspan(p.firstTriangle, p.triangleCount);
         for (const Triangle& t : triangles) {
-            triangle(px(points[t.index[0]]), px(points[t.index[1]]), px(points[t.index[2]]), t.boundaryEdges, p.style.fill);
+            triangle(px(points[t.index[0]]), px(points[t.index[1]]), px(points[t.index[2]]), t.boundaryEdges,
+                     p.style.fill);
         }
         // The outline is centred on the edges: a polygon has no cheap exact inward offset.
         if (p.style.outlineWidth > 0.0f && p.pointCount >= 2) {
@@ -177,7 +180,8 @@ struct Builder {
     }
 
     static std::uint8_t lerp(std::uint8_t a, std::uint8_t b, float t) {
-        return static_cast<std::uint8_t>(std::lround(static_cast<float>(a) + (static_cast<float>(b) - static_cast<float>(a)) * t));
+        return static_cast<std::uint8_t>(
+            std::lround(static_cast<float>(a) + (static_cast<float>(b) - static_cast<float>(a)) * t));
     }
 
     void operator()(const primitive::Polyline& p) {
@@ -207,8 +211,8 @@ struct Builder {
         Point shaftEnd{tip.x - u.x * 0.6f * head, tip.y - u.y * 0.6f * head};
         if (length > head) stroke(tail, shaftEnd, a.width, a.color);
         Point base{tip.x - u.x * head, tip.y - u.y * head};
-        triangle(tip, {base.x + n.x * halfWidth, base.y + n.y * halfWidth}, {base.x - n.x * halfWidth, base.y - n.y * halfWidth},
-                 7, a.color);
+        triangle(tip, {base.x + n.x * halfWidth, base.y + n.y * halfWidth},
+                 {base.x - n.x * halfWidth, base.y - n.y * halfWidth}, 7, a.color);
     }
 
     void operator()(const primitive::Ring& r) {

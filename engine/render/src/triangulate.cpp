@@ -15,9 +15,7 @@ bool inTriangle(Point p, Point a, Point b, Point c) {
     return cross(a, b, p) >= 0.0 && cross(b, c, p) >= 0.0 && cross(c, a, p) >= 0.0;
 }
 
-bool samePoint(Point a, Point b) {
-    return a.x == b.x && a.y == b.y;
-}
+bool samePoint(Point a, Point b) { return a.x == b.x && a.y == b.y; }
 
 } // namespace
 
@@ -74,7 +72,8 @@ void triangulatePolygon(std::span<const Point> points, std::uint32_t firstIndex,
         std::size_t next = (ear + 1) % m;
         emit(prev, ear, next, onBoundary[prev], onBoundary[ear], false);
         // The new edge prev-next replaces two; it is outline only if both were (a collinear point).
-        onBoundary[prev] = onBoundary[prev] && onBoundary[ear] && cross(points[ring[prev]], points[ring[ear]], points[ring[next]]) == 0.0;
+        onBoundary[prev] = onBoundary[prev] && onBoundary[ear] &&
+                           cross(points[ring[prev]], points[ring[ear]], points[ring[next]]) == 0.0;
         ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(ear));
         onBoundary.erase(onBoundary.begin() + static_cast<std::ptrdiff_t>(ear));
     }

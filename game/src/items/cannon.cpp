@@ -48,7 +48,9 @@ public:
     std::span<const PartKey> keys() const override { return kKeys; }
     bool needsName() const override { return true; }
     bool plays(PartRole role) const override { return role == PartRole::fire || role == PartRole::triggered; }
-    ItemDesc make(Vec2 position) const override { return made(position, CannonParams{8.0, partKind("heavy"), std::nullopt}); }
+    ItemDesc make(Vec2 position) const override {
+        return made(position, CannonParams{8.0, partKind("heavy"), std::nullopt});
+    }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
         CannonParams& p = item.params.as<CannonParams>();

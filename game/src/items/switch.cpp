@@ -47,8 +47,8 @@ public:
     void checkReferences(const ItemDesc& item, SceneReading& reading) const override {
         const SwitchParams& p = item.params.as<SwitchParams>();
         if (!p.given || reading.scene.findRope(p.triggers) >= 0) return; // a switch may cut a named [[rope]]
-        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered, "",
-                                                       &reading.scene.ropeNames);
+        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered,
+                                                     "", &reading.scene.ropeNames);
             !message.empty())
             reading.diag.error(p.at, std::move(message));
     }

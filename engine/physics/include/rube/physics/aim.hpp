@@ -39,7 +39,8 @@ struct Arc {
 
 /// A gravity-influenced shot at a fixed target: the low and the high arc, or why there is none.
 struct GravityShot {
-    std::optional<Arc> lowArc;  ///< the flatter, earlier arc; the only one at exactly the minimum speed or without gravity
+    std::optional<Arc>
+        lowArc; ///< the flatter, earlier arc; the only one at exactly the minimum speed or without gravity
     std::optional<Arc> highArc; ///< the lobbed, later arc
     double minimumSpeed = 0.0;  ///< the least muzzle speed that reaches the target, m/s (always filled in)
     std::string reason;         ///< empty when reachable, otherwise why not ("target out of reach: ...")
@@ -62,8 +63,7 @@ struct Intercept {
 /// moving at constant velocity, from |d + v t - g t^2 / 2| = s t (a quadratic without gravity, a quartic
 /// with it). Nothing when no shot at this muzzle speed catches the target.
 std::optional<Intercept> leadMovingTarget(Vec2 muzzle, Vec2 target, Vec2 targetVelocity, double muzzleSpeed,
-                                          Vec2 gravity = {},
-                                          double maxTime = std::numeric_limits<double>::infinity());
+                                          Vec2 gravity = {}, double maxTime = std::numeric_limits<double>::infinity());
 
 /// When to fire a shot whose direction is fixed, so it hits a target moving at constant velocity.
 struct ShotTiming {

@@ -46,8 +46,8 @@ struct KinematicPath {
 /// any change to them from outside (an explosion, a field, the game) wakes its island.
 struct SleepState {
     bool asleep = false;
-    int island = -1;       ///< asleep: the island it fell asleep with (the index of one of its circles)
-    double slowFor = 0.0;  ///< seconds its speed and its surface's spin speed have stayed below the threshold
+    int island = -1;      ///< asleep: the island it fell asleep with (the index of one of its circles)
+    double slowFor = 0.0; ///< seconds its speed and its surface's spin speed have stayed below the threshold
 };
 
 /// A circle. Dynamic circles move under gravity and impacts; kinematic ones follow a path.
@@ -58,10 +58,10 @@ struct Circle {
     double inverseMass = 1.0; ///< 0 for kinematic circles: infinite mass (lecture 3, walls)
     Material material;
     Motion motion = Motion::dynamic;
-    int path = -1;            ///< index of its KinematicPath, or -1
-    Vec2 origin;              ///< where it was placed: the path's offsets are added to this
-    bool magnetic = false;    ///< magnets pull it (steel)
-    double angle = 0.0;       ///< radians turned since it was placed (counter-clockwise)
+    int path = -1;                ///< index of its KinematicPath, or -1
+    Vec2 origin;                  ///< where it was placed: the path's offsets are added to this
+    bool magnetic = false;        ///< magnets pull it (steel)
+    double angle = 0.0;           ///< radians turned since it was placed (counter-clockwise)
     double angularVelocity = 0.0; ///< omega, rad/s
     double inverseInertia = 0.0;  ///< 1 / I about the centre; 0 for kinematic and fixed circles
     SleepState sleep;             ///< the solver's rest: asleep circles hold still until something reaches them
@@ -74,19 +74,20 @@ struct Circle {
 struct Segment {
     Vec2 a;
     Vec2 b;
-    Vec2 velocity;            ///< of both endpoints, during the current step (kinematic only)
+    Vec2 velocity; ///< of both endpoints, during the current step (kinematic only)
     double radius = 0.0;
     Material material;
     int path = -1;
     Vec2 originA, originB;
     double surfaceSpeed = 0.0; ///< a conveyor: its surface moves along a->b at this speed, m/s (felt through friction)
-    double pivotAlong = 0.5;       ///< where along a->b it turns when its path turns: 0 at a, 1 at b
-    double angularVelocity = 0.0;  ///< omega about the pivot during the current step, rad/s (turning paths only)
+    double pivotAlong = 0.5;   ///< where along a->b it turns when its path turns: 0 at a, 1 at b
+    double angularVelocity = 0.0; ///< omega about the pivot during the current step, rad/s (turning paths only)
     Motion motion() const { return path >= 0 ? Motion::kinematic : Motion::fixed; }
     /// The velocity of its surface at `point`: v + omega x r, r from the pivot (lecture 3's point velocity).
     Vec2 velocityAt(Vec2 point) const {
         // Exactly `velocity` when it does not turn, so translating paths give bit-identical results.
-        return angularVelocity == 0.0 ? velocity : velocity + (point - lerp(a, b, pivotAlong)).perpendicular() * angularVelocity;
+        return angularVelocity == 0.0 ? velocity
+                                      : velocity + (point - lerp(a, b, pivotAlong)).perpendicular() * angularVelocity;
     }
 };
 
@@ -95,11 +96,11 @@ struct CircleDef {
     Vec2 position;
     Vec2 velocity;
     double radius = 0.5;
-    double mass = 1.0;        ///< ignored for kinematic circles
+    double mass = 1.0; ///< ignored for kinematic circles
     Material material;
     Motion motion = Motion::dynamic;
     int path = -1;
-    bool magnetic = false;    ///< magnets pull it (steel)
+    bool magnetic = false;        ///< magnets pull it (steel)
     double angularVelocity = 0.0; ///< omega at the start, rad/s (a spinning throw)
     double inertiaFactor = 0.5;   ///< I = inertiaFactor m r^2: 1/2 a solid disc, 1 a thin ring
     double gravityScale = 1.0;    ///< how much of the world's gravity acts on it (dynamic only)

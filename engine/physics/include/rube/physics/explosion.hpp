@@ -31,7 +31,7 @@ struct Explosion {
     double radius = 1.0;               ///< m: a body whose centre is this far or farther is unaffected
     double strength = 1.0;             ///< N s: the impulse J a body at the centre receives
     Falloff falloff = Falloff::linear; ///< how J shrinks towards the edge
-    double coreFraction = 0.1;         ///< inverseSquareClamped only: the full-strength core, as a fraction of the radius
+    double coreFraction = 0.1; ///< inverseSquareClamped only: the full-strength core, as a fraction of the radius
 };
 
 /// The fraction of the strength at distance `distance` from the centre: 1 at the centre (0 at or past the radius).

@@ -22,7 +22,7 @@ namespace rube {
 /// Drag of still air on every dynamic circle, in proportion to its width 2r (the 2-D cross-section):
 /// F = -2r (linear v + quadratic |v| v). Heavier balls of the same size are slowed less, as in air.
 struct AirDrag {
-    double linear = 0.0;    ///< N s/m per metre of width: viscous (slow, small bodies); terminal speed m g / (2r linear)
+    double linear = 0.0; ///< N s/m per metre of width: viscous (slow, small bodies); terminal speed m g / (2r linear)
     double quadratic = 0.0; ///< N s^2/m^2 per metre of width: pressure drag (1/2 rho C_d; about 0.28 for a ball in air)
     /// True when either coefficient is set.
     bool active() const { return linear > 0.0 || quadratic > 0.0; }
@@ -56,18 +56,18 @@ struct Wind {
 /// A magnet: pulls every magnetic circle (steel) towards its centre with F = strength / d^2.
 /// Inside `radius` the pull is held at its value at the radius, so it stays finite at the centre.
 struct Magnet {
-    Vec2 position;            ///< m
-    double strength = 1.0;    ///< N m^2: the pull at 1 m
-    double radius = 0.1;      ///< m: the pull does not grow closer than this
+    Vec2 position;                                          ///< m
+    double strength = 1.0;                                  ///< N m^2: the pull at 1 m
+    double radius = 0.1;                                    ///< m: the pull does not grow closer than this
     double reach = std::numeric_limits<double>::infinity(); ///< m: no pull at or past this distance
-    bool on = true;           ///< a switch may turn a magnet on or off
+    bool on = true;                                         ///< a switch may turn a magnet on or off
 };
 
 /// A thruster (or rocket) fixed to one circle: a constant force from `start` until `end`.
 struct Thruster {
-    CircleId circle;          ///< the dynamic circle it pushes (none while it is disabled)
-    Vec2 force;               ///< N, in world axes
-    double start = 0.0;       ///< s, world time it lights
+    CircleId circle;                                      ///< the dynamic circle it pushes (none while it is disabled)
+    Vec2 force;                                           ///< N, in world axes
+    double start = 0.0;                                   ///< s, world time it lights
     double end = std::numeric_limits<double>::infinity(); ///< s, world time it burns out
 };
 
@@ -76,10 +76,10 @@ struct Thruster {
 /// (a circular segment), and slowed by drag in proportion to how much of it is under water.
 /// In 2-D a density is a mass per area: kg/m^2.
 struct Water {
-    Vec2 min;                 ///< lower-left corner of the pool, m
-    Vec2 max;                 ///< upper-right corner; max.y is the surface, m
-    double density = 1000.0;  ///< rho, kg/m^2: a ball of half this density floats half under
-    double drag = 1000.0;     ///< N s/m per metre of width, fully submerged: damps a floating 1 m ball in seconds
+    Vec2 min;                ///< lower-left corner of the pool, m
+    Vec2 max;                ///< upper-right corner; max.y is the surface, m
+    double density = 1000.0; ///< rho, kg/m^2: a ball of half this density floats half under
+    double drag = 1000.0;    ///< N s/m per metre of width, fully submerged: damps a floating 1 m ball in seconds
 };
 
 /// The area of a circle of radius `r` whose centre is `height` above a flat surface that lies

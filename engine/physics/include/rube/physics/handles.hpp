@@ -37,6 +37,7 @@ using PivotId = Handle<PivotTag>;     ///< a pivot of a World
 template <class Tag>
 struct std::hash<rube::Handle<Tag>> {
     std::size_t operator()(rube::Handle<Tag> h) const noexcept {
-        return std::hash<std::uint64_t>{}(static_cast<std::uint64_t>(static_cast<std::uint32_t>(h.index)) << 32 | h.generation);
+        return std::hash<std::uint64_t>{}(static_cast<std::uint64_t>(static_cast<std::uint32_t>(h.index)) << 32 |
+                                          h.generation);
     }
 };

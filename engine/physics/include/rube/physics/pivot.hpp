@@ -10,9 +10,9 @@ namespace rube {
 
 /// What a caller fills in to add a pivot: which body, pinned where.
 struct PivotDef {
-    BodyId body;       ///< the rigid body
-    Vec2 localAnchor;  ///< the pinned point in the body's own frame (relative to its centre, angle 0), m
-    Vec2 worldAnchor;  ///< the fixed point of the world it is pinned to, m
+    BodyId body;      ///< the rigid body
+    Vec2 localAnchor; ///< the pinned point in the body's own frame (relative to its centre, angle 0), m
+    Vec2 worldAnchor; ///< the fixed point of the world it is pinned to, m
 };
 
 /// A pivot in the world.

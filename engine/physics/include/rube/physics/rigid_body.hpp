@@ -27,8 +27,8 @@ struct RigidBody {
     double inverseInertia = 1.0;  ///< 1 / I about the centre of mass; 0 when fixedRotation or not dynamic
     Material material;
     Motion motion = Motion::dynamic;
-    bool fixedRotation = false;   ///< lecture 3's block: stays axis-aligned
-    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it
+    bool fixedRotation = false; ///< lecture 3's block: stays axis-aligned
+    double gravityScale = 1.0;  ///< how much of the world's gravity acts on it
 };
 
 /// What a caller fills in to add a rigid body; the default is a 1 kg dynamic 1 m x 1 m box.
@@ -39,12 +39,12 @@ struct RigidBodyDef {
     Vec2 velocity;
     double angularVelocity = 0.0;
     Vec2 halfExtents{0.5, 0.5};
-    double mass = 1.0;            ///< ignored unless dynamic
+    double mass = 1.0; ///< ignored unless dynamic
     Material material;
     Motion motion = Motion::dynamic;
-    bool fixedRotation = false;   ///< lecture 3's block: never turns
-    double gravityScale = 1.0;    ///< how much of the world's gravity acts on it (dynamic only)
-    std::uint64_t userValue = 0;  ///< the caller's own value (World::userValue)
+    bool fixedRotation = false;  ///< lecture 3's block: never turns
+    double gravityScale = 1.0;   ///< how much of the world's gravity acts on it (dynamic only)
+    std::uint64_t userValue = 0; ///< the caller's own value (World::userValue)
 };
 
 /// True for lecture 3's block, a box that never turns (every method moves it); any other body turns,

@@ -11,9 +11,9 @@ namespace rube {
 
 /// What a caller fills in to add a rope; the default is a 1 m rope to an anchor at the origin.
 struct RopeDef {
-    CircleId circle;   ///< the circle at one end (dynamic, or the rope does nothing)
-    CircleId other;    ///< the circle at the other end, or null for the fixed `anchor`
-    Vec2 anchor;       ///< the fixed end, m (used when `other` is null)
+    CircleId circle;     ///< the circle at one end (dynamic, or the rope does nothing)
+    CircleId other;      ///< the circle at the other end, or null for the fixed `anchor`
+    Vec2 anchor;         ///< the fixed end, m (used when `other` is null)
     double length = 1.0; ///< the most the ends may be apart, m (> 0)
 };
 

@@ -24,10 +24,26 @@ struct Vec2 {
     constexpr Vec2 operator-() const { return {-x, -y}; }
     constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
     constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
-    constexpr Vec2& operator+=(Vec2 o) { x += o.x; y += o.y; return *this; }
-    constexpr Vec2& operator-=(Vec2 o) { x -= o.x; y -= o.y; return *this; }
-    constexpr Vec2& operator*=(double s) { x *= s; y *= s; return *this; }
-    constexpr Vec2& operator/=(double s) { x /= s; y /= s; return *this; }
+    constexpr Vec2& operator+=(Vec2 o) {
+        x += o.x;
+        y += o.y;
+        return *this;
+    }
+    constexpr Vec2& operator-=(Vec2 o) {
+        x -= o.x;
+        y -= o.y;
+        return *this;
+    }
+    constexpr Vec2& operator*=(double s) {
+        x *= s;
+        y *= s;
+        return *this;
+    }
+    constexpr Vec2& operator/=(double s) {
+        x /= s;
+        y /= s;
+        return *this;
+    }
     /// Exact, bitwise-meaningful equality; use approxEqual for computed values.
     constexpr bool operator==(const Vec2&) const = default;
 
@@ -89,8 +105,8 @@ constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + (b - a) * t; }
 /// True when a and b differ by at most `tolerance` in each component,
 /// measured relative to their size when they are large (|a - b| <= tol * max(1, |a|, |b|)).
 inline bool approxEqual(Vec2 a, Vec2 b, double tolerance = 1e-9) {
-    const double scale = std::fmax(1.0, std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)),
-                                                  std::fmax(std::fabs(b.x), std::fabs(b.y))));
+    const double scale = std::fmax(
+        1.0, std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)), std::fmax(std::fabs(b.x), std::fabs(b.y))));
     return std::fabs(a.x - b.x) <= tolerance * scale && std::fabs(a.y - b.y) <= tolerance * scale;
 }
 

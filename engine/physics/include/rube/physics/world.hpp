@@ -19,11 +19,13 @@ namespace rube {
 
 /// The time-step methods of the course, each honest about where it fails (see README).
 enum class Method : std::uint8_t {
-    discrete,  ///< fixed step, move everything, push overlaps apart (lecture 5, first method): tunnels when speed x dt > 2r
+    discrete, ///< fixed step, move everything, push overlaps apart (lecture 5, first method): tunnels when speed x dt >
+              ///< 2r
     turnBased, ///< bodies move one by one until their first impact (lecture 3): order matters
     exact,     ///< earliest time of impact over all pairs, resolved one at a time (lecture 3's ideal method)
     solver,    ///< substepped sequential-impulse contact solver, for piles and resting contact
-    automatic, ///< "auto": the cheapest that holds, step by step and island by island: exact where bodies are few and impacts sparse and nothing needs friction or turning, else the solver
+    automatic, ///< "auto": the cheapest that holds, step by step and island by island: exact where bodies are few and
+               ///< impacts sparse and nothing needs friction or turning, else the solver
 };
 
 /// The method's name as scene files and the command line spell it ("turn-based", ...).
@@ -43,16 +45,16 @@ struct WorldDef {
     Vec2 gravity{0.0, -9.81};   ///< m/s^2, the same for every dynamic body
     double timeStep = 1.0 / 60; ///< seconds per step
     Method method = Method::exact;
-    Aabb bounds;                ///< leaving it is reported as an escape
+    Aabb bounds;                 ///< leaving it is reported as an escape
     int maxEventsPerStep = 4096; ///< impacts one step may resolve before it gives up (counted as a cap hit)
-    double restingSpeed = 0.0;  ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
-    int substeps = 8;           ///< solver only: substeps per step
-    AirDrag airDrag;            ///< drag of still air on every dynamic circle; none by default
+    double restingSpeed = 0.0;   ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
+    int substeps = 8;            ///< solver only: substeps per step
+    AirDrag airDrag;             ///< drag of still air on every dynamic circle; none by default
     /// solver and auto: circles that, with everything they touch, stay under `sleepSpeed` (m/s, and
     /// their surfaces' spin) for `timeToSleep` seconds rest until something reaches them; 0 never.
     /// Worlds with ropes or rigid bodies keep every circle awake.
     double sleepSpeed = 0.01;
-    double timeToSleep = 0.5;   ///< seconds, see sleepSpeed
+    double timeToSleep = 0.5; ///< seconds, see sleepSpeed
     /// solver and auto: the most a dynamic rigid body (box, capsule; not a circle, which the solver
     /// sweeps) may move in one step, m.
     /// Faster bodies are slowed to it before the step and counted (StepStats::speedClamps): as Box2D's
@@ -70,34 +72,37 @@ enum class Other : std::uint8_t { circle, segment, segmentCap, body };
 /// their slots in World::circles(), segments() and bodies() during the step (World::circleId(slot)
 /// and its kin give their handles, valid until the next remove, disable or enable).
 struct Impact {
-    int circle = -1;            ///< the dynamic circle's slot
+    int circle = -1; ///< the dynamic circle's slot
     Other otherKind = Other::circle;
     int other = -1;             ///< slot of the circle or segment it hit
     double time = 0.0;          ///< world time of the impact, seconds
     Vec2 pointOfImpact;         ///< where the surfaces touch
     Vec2 normal;                ///< unit collision normal, pointing from the other body to the circle
     double approachSpeed = 0.0; ///< normal speed of approach before the resolve, m/s
-    int body = -1;              ///< the block's slot, for a block's impact (circle is then -1; normal points towards the block)
+    int body = -1; ///< the block's slot, for a block's impact (circle is then -1; normal points towards the block)
 };
 
 /// Counters over the world's life, for the summary and the bench.
 struct StepStats {
     std::int64_t steps = 0;
-    std::int64_t impacts = 0;        ///< impacts resolved
+    std::int64_t impacts = 0;         ///< impacts resolved
     std::int64_t restingContacts = 0; ///< impacts treated as resting contact (approach below restingSpeed)
-    std::int64_t capsHit = 0;        ///< steps that hit maxEventsPerStep
-    std::int64_t escapes = 0;        ///< circles and rigid bodies that left the bounds (each counted once)
+    std::int64_t capsHit = 0;         ///< steps that hit maxEventsPerStep
+    std::int64_t escapes = 0;         ///< circles and rigid bodies that left the bounds (each counted once)
     int maxEventsInStep = 0;
-    std::int64_t autoSolverSteps = 0; ///< auto: the steps it gave to the solver, for some or all bodies (the rest went to exact)
-    std::int64_t exactBodySteps = 0;  ///< auto: dynamic bodies (circles and rigid bodies) moved by exact, summed over steps
+    std::int64_t autoSolverSteps =
+        0; ///< auto: the steps it gave to the solver, for some or all bodies (the rest went to exact)
+    std::int64_t exactBodySteps =
+        0; ///< auto: dynamic bodies (circles and rigid bodies) moved by exact, summed over steps
     std::int64_t solverBodySteps = 0; ///< auto: dynamic bodies moved by the solver (asleep ones too), summed over steps
-    bool nonFinite = false;          ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
-    std::int64_t speedClamps = 0;    ///< solver and auto: speeds cut to WorldDef::maxTranslation or maxRotation (one per body and step)
-    std::int64_t isolatedBodies = 0; ///< bodies frozen because their state went non-finite (see World::step)
+    bool nonFinite = false;           ///< a NaN or infinity appeared in a body's state (circles and rigid bodies)
+    std::int64_t speedClamps =
+        0; ///< solver and auto: speeds cut to WorldDef::maxTranslation or maxRotation (one per body and step)
+    std::int64_t isolatedBodies = 0;         ///< bodies frozen because their state went non-finite (see World::step)
     Other firstIsolatedKind = Other::circle; ///< the first isolated body: a circle or a rigid body (Other::body)
-    CircleId firstIsolatedCircle;    ///< the first isolated body when it is a circle, else null
-    BodyId firstIsolatedBody;        ///< the first isolated body when it is a rigid body, else null
-    int firstIsolatedSlot = -1;      ///< its slot among the world's circles or bodies when isolated, -1 when none was
+    CircleId firstIsolatedCircle;            ///< the first isolated body when it is a circle, else null
+    BodyId firstIsolatedBody;                ///< the first isolated body when it is a rigid body, else null
+    int firstIsolatedSlot = -1; ///< its slot among the world's circles or bodies when isolated, -1 when none was
 };
 
 class StepMethod;
@@ -219,9 +224,9 @@ public:
     /// Advances the world by one time step with its method. Under solver and auto, speeds past
     /// WorldDef::maxTranslation and maxRotation are clamped first (StepStats::speedClamps); a body whose
     /// state is or becomes non-finite is frozen at its last finite pose with infinite mass, so it cannot
-    /// corrupt the others, and reported (StepStats::isolatedBodies, nonFinite). Throws std::logic_error when the world has
-    /// rigid bodies that turn (not fixed-rotation boxes), capsules or pivots, and its method is one
-    /// that does not model them (discrete, turn-based, exact): only solver and auto do.
+    /// corrupt the others, and reported (StepStats::isolatedBodies, nonFinite). Throws std::logic_error when the world
+    /// has rigid bodies that turn (not fixed-rotation boxes), capsules or pivots, and its method is one that does not
+    /// model them (discrete, turn-based, exact): only solver and auto do.
     void step();
     /// Switches the time-step method (for running any scene under every method).
     void setMethod(Method method);
@@ -273,7 +278,7 @@ private:
     std::vector<std::uint8_t> escaped_;
     std::vector<std::uint8_t> escapedBodies_; ///< per rigid body, as escaped_ per circle
     std::unique_ptr<StepMethod> method_;
-    std::unique_ptr<WorldTables> tables_;   ///< handles, and what is disabled (world_handles.hpp)
+    std::unique_ptr<WorldTables> tables_;    ///< handles, and what is disabled (world_handles.hpp)
     std::unique_ptr<FiniteSnapshot> finite_; ///< each body's last finite pose, for isolating one that goes non-finite
     StepStats stats_;
     double time_ = 0.0;

@@ -33,30 +33,75 @@ struct Triangle {
 namespace primitive {
 /// A filled disc; with `spoke`, a line in the outline colour from the centre to the rim at
 /// `angle` radians shows how far it has turned.
-struct Circle { Point centre; float radius = 0; Style style; bool spoke = false; float angle = 0; };
+struct Circle {
+    Point centre;
+    float radius = 0;
+    Style style;
+    bool spoke = false;
+    float angle = 0;
+};
 /// A segment a-b thickened by `radius` metres with rounded caps (a capsule); radius 0 gives
 /// a hairline of the outline's width.
-struct Capsule { Point a; Point b; float radius = 0; Style style; };
+struct Capsule {
+    Point a;
+    Point b;
+    float radius = 0;
+    Style style;
+};
 /// A straight stroke `width` pixels wide with rounded ends.
-struct Line { Point a; Point b; float width = 1; Color color; };
+struct Line {
+    Point a;
+    Point b;
+    float width = 1;
+    Color color;
+};
 /// A box of half extents `halfExtents` metres turned by `angle` radians about its centre.
-struct Box { Point centre; Point halfExtents; float angle = 0; float cornerRadius = 0; Style style; };
+struct Box {
+    Point centre;
+    Point halfExtents;
+    float angle = 0;
+    float cornerRadius = 0;
+    Style style;
+};
 /// A simple polygon (any winding), stored as points and its triangulation.
-struct Polygon { std::uint32_t firstPoint = 0, pointCount = 0, firstTriangle = 0, triangleCount = 0; Style style; };
+struct Polygon {
+    std::uint32_t firstPoint = 0, pointCount = 0, firstTriangle = 0, triangleCount = 0;
+    Style style;
+};
 /// An open chain of strokes `width` pixels wide, its colour blending from `first` to `last`.
-struct Polyline { std::uint32_t firstPoint = 0, pointCount = 0; float width = 1; Color first; Color last; };
+struct Polyline {
+    std::uint32_t firstPoint = 0, pointCount = 0;
+    float width = 1;
+    Color first;
+    Color last;
+};
 /// A stroke from tail to tip with a triangular head at the tip; sizes in pixels.
-struct Arrow { Point tail; Point tip; float width = 2; Color color; };
+struct Arrow {
+    Point tail;
+    Point tip;
+    float width = 2;
+    Color color;
+};
 /// A circle's outline only, `width` pixels wide inside `radius` metres (explosions, highlights).
-struct Ring { Point centre; float radius = 0; float width = 2; Color color; };
+struct Ring {
+    Point centre;
+    float radius = 0;
+    float width = 2;
+    Color color;
+};
 /// A line of text at a pixel position measured from the frame's top-left corner (a HUD).
-struct Text { int x = 0, y = 0; int scale = 2; Color color; std::uint32_t firstChar = 0, charCount = 0; };
+struct Text {
+    int x = 0, y = 0;
+    int scale = 2;
+    Color color;
+    std::uint32_t firstChar = 0, charCount = 0;
+};
 } // namespace primitive
 
 /// Any one primitive.
-using Primitive = std::variant<primitive::Circle, primitive::Capsule, primitive::Line, primitive::Box,
-                               primitive::Polygon, primitive::Polyline, primitive::Arrow, primitive::Ring,
-                               primitive::Text>;
+using Primitive =
+    std::variant<primitive::Circle, primitive::Capsule, primitive::Line, primitive::Box, primitive::Polygon,
+                 primitive::Polyline, primitive::Arrow, primitive::Ring, primitive::Text>;
 
 /// The shapes of one frame, drawn back to front in the order they were added. Reuse one list
 /// across frames (clear() keeps its memory) to avoid allocating every frame.

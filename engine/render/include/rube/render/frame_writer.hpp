@@ -59,7 +59,7 @@ private:
     std::condition_variable spaceReady_; // write() and finish() wait for the worker
     std::deque<Job> queue_;
     std::vector<Image> spares_;
-    bool busy_ = false;  // the worker holds a job outside the queue
+    bool busy_ = false; // the worker holds a job outside the queue
     bool stop_ = false;
     std::exception_ptr error_;
     std::int64_t framesWritten_ = 0;

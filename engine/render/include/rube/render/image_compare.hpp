@@ -26,9 +26,9 @@ struct CompareOptions {
 struct Comparison {
     bool sameSize = false;
     std::int64_t totalPixels = 0;
-    std::int64_t differingPixels = 0;    ///< pixels with no match within the shift, either way
-    int largestDifference = 0;           ///< largest channel difference at the same position, 0-255
-    bool matches = false;                ///< same size and differingPixels within the allowed share
+    std::int64_t differingPixels = 0; ///< pixels with no match within the shift, either way
+    int largestDifference = 0;        ///< largest channel difference at the same position, 0-255
+    bool matches = false;             ///< same size and differingPixels within the allowed share
 
     /// differingPixels / totalPixels (1 when the sizes differ).
     double differingShare() const;

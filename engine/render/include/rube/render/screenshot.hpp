@@ -12,12 +12,12 @@ namespace rube::render {
 /// The outcome of one golden check, with a message fit for a test failure.
 struct ScreenshotCheck {
     bool passed = false;
-    bool goldenWritten = false;          ///< UPDATE_SCREENSHOTS=1 replaced the golden
-    std::string message;                 ///< what happened and which files to look at
+    bool goldenWritten = false; ///< UPDATE_SCREENSHOTS=1 replaced the golden
+    std::string message;        ///< what happened and which files to look at
     Comparison comparison;
-    std::filesystem::path actualPath;    ///< written on failure: the frame just rendered
-    std::filesystem::path expectedPath;  ///< written on failure when the golden exists: a copy of it
-    std::filesystem::path diffPath;      ///< written on failure when the sizes agree: see diffImage
+    std::filesystem::path actualPath;   ///< written on failure: the frame just rendered
+    std::filesystem::path expectedPath; ///< written on failure when the golden exists: a copy of it
+    std::filesystem::path diffPath;     ///< written on failure when the sizes agree: see diffImage
 };
 
 /// The golden file name of frame `frame` of `scene`, e.g. "render-basics_0000.png", so a
@@ -34,7 +34,6 @@ bool updatingScreenshots();
 /// - A mismatch fails and writes <name>.actual.png, <name>.expected.png and <name>.diff.png
 ///   into `failureFolder`, returning their paths; a later pass removes them again.
 ScreenshotCheck checkScreenshot(const Image& actual, const std::filesystem::path& goldenPath,
-                                const std::filesystem::path& failureFolder,
-                                const CompareOptions& options = {});
+                                const std::filesystem::path& failureFolder, const CompareOptions& options = {});
 
 } // namespace rube::render

@@ -1,0 +1,63 @@
+// levels/index.toml: every shipped level listed once, in a readable order, and the reader's errors.
+#include "level_index.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <set>
+
+using namespace rube::game;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kLevels = RUBE_GAME_LEVELS_DIR;
+
+std::string firstError(const LevelIndexLoad& load) {
+    REQUIRE_FALSE(load.errors.empty());
+    return load.errors.front().format();
+}
+
+} // namespace
+
+TEST_CASE("the level index lists every shipped level exactly once", "[index]") {
+    const LevelIndexLoad load = loadLevelIndex(kLevels / "index.toml");
+    for (const SceneError& e : load.errors) FAIL(e.format());
+    REQUIRE(load.levels);
+    std::set<fs::path> listed;
+    for (const IndexedLevel& level : *load.levels) listed.insert(fs::canonical(level.file));
+    std::set<fs::path> shipped;
+    for (const fs::directory_entry& entry : fs::directory_iterator(kLevels)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() == ".toml" && name != "index.toml" &&
+            name.find(".solution.") == std::string::npos)
+            shipped.insert(fs::canonical(entry.path()));
+    }
+    CHECK(listed == shipped);
+    CHECK(load.levels->size() == listed.size());
+}
+
+TEST_CASE("the level index's difficulty never falls by more than one from one level to the next", "[index]") {
+    const LevelIndexLoad load = loadLevelIndex(kLevels / "index.toml");
+    REQUIRE(load.levels);
+    for (std::size_t i = 1; i < load.levels->size(); ++i) {
+        INFO((*load.levels)[i].file);
+        CHECK((*load.levels)[i].difficulty >= (*load.levels)[i - 1].difficulty - 1);
+    }
+}
+
+TEST_CASE("the level index reports bad entries at their place", "[index]") {
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 9\n", "i.toml",
+                                     kLevels)) == "i.toml:4:14: difficulty must be between 1 and 5, got 9");
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"nope.toml\"\ntitle = \"x\"\ndifficulty = 1\n", "i.toml",
+                                     kLevels)) == "i.toml:2:8: no level file 'nope.toml' beside the index");
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
+                                     "introduces = [\"rampp\"]\n",
+                                     "i.toml", kLevels)) == "i.toml:5:15: unknown part kind 'rampp' (did you mean 'ramp'?)");
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"a\"\ndifficulty = 1\n"
+                                     "[[level]]\nfile = \"ramp.toml\"\ntitle = \"b\"\ndifficulty = 1\n",
+                                     "i.toml", kLevels)) == "i.toml:6:8: 'ramp.toml' is listed already, at line 1");
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml",
+                                     kLevels))
+              .find("unknown key 'titel' in [[level]] (did you mean 'title'?)") != std::string::npos);
+}

@@ -186,6 +186,7 @@ int main(int argc, char** argv) {
         }
         for (const auto& engine : scaling ? sceneEngines : engines) {
             if (!selected(engineFilter, engine.name)) continue;
+            if (scene.boxes && !engine.boxes) continue; // only the solver moves boxes that turn
             if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly &&
                 scene.scalingBodies > kFullRunPeerScalingBodies) {
                 std::fprintf(stderr, "%-18s %-16s left out of the full run (cost): rube_bench --scaling runs it\n",
@@ -194,7 +195,7 @@ int main(int argc, char** argv) {
             }
             // Peers run at the 60 Hz step their users run them at: one point each on the chart; the
             // scaling sweep runs everything at 60 Hz, since it measures cost against N, not dt.
-            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer || scaling
+            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer || scaling || scene.boxes
                                                      ? std::vector<int>{60}
                                                      : rates;
             // Coarse steps first: once a step times out, every finer one would too (more steps for

@@ -268,12 +268,16 @@ rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
 # solution), and the script reads against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
 list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the level index (levels/index.toml) is no level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)
   set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)
   rube_cli_test("check --strict level ${stem}" "check|--strict|${level}|${solution}" 0 -DSTDERR_EMPTY=ON
                 "-DSTDOUT_MATCH=^[^\n]*${stem}.toml: ok\n[^\n]*${stem}.solution.toml: ok \\(a script for [^\n]*${stem}.toml\\)\n$")
 endforeach()
+# The level index is recognised and checked as one (every file it lists exists, no level twice).
+rube_cli_test("check the level index" "check|${PROJECT_SOURCE_DIR}/levels/index.toml" 0 -DSTDERR_EMPTY=ON
+              "-DSTDOUT_MATCH=index.toml: ok \\(a level index of [0-9]+ levels\\)\n$")
 set(lint ${RUBE_CLI_DIR}/lint)
 # Each lint fixture lists its warnings in '# expect:' lines; warnings leave the status 0, --strict makes it 2.
 foreach(stem warnings self-solving missed)

@@ -127,7 +127,7 @@ ExitCode checkFiles(const CheckOptions& options, std::ostream& out, std::ostream
             ok = false;
             continue;
         }
-        const bool good = looksLikeIndex(file, *text)  ? checkIndex(file, *text, out, err)
+        const bool good = looksLikeIndex(file, *text)    ? checkIndex(file, *text, out, err)
                           : looksLikeScript(file, *text) ? checkScript(options, file, out, err)
                                                          : checkScene(options, file, *text, out, err);
         ok = ok && good;

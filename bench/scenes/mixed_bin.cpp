@@ -1,5 +1,6 @@
 // mixed-bin (issue 26): 200 bodies, boxes of five sizes (0.1 to 0.5 m half-sizes, some long) and balls
-// (r = 0.1 to 0.3 m), dropped in a seeded jumble into a bin 6 m wide with 8 m walls, 5 s. Errors: the
+// (r = 0.1 to 0.3 m), dropped in a seeded jumble (rows of ten, 0.9 m apart, up to 19 m) into a bin
+// 10 m wide whose 25 m walls nothing can bounce over, 5 s. Errors: the
 // fastest body at the end (m/s; a settled bin is still) and escapes (the runner counts balls that leave).
 // --quick: 40 bodies.
 #include "scene.hpp"
@@ -11,9 +12,9 @@
 namespace bench {
 namespace {
 
-const std::array<LineSpec, 3> kBin{{{.a = {-3, 0}, .b = {3, 0}, .friction = 0.6},
-                                    {.a = {-3, 0}, .b = {-3, 8}, .friction = 0.6},
-                                    {.a = {3, 0}, .b = {3, 8}, .friction = 0.6}}};
+const std::array<LineSpec, 3> kBin{{{.a = {-5, 0}, .b = {5, 0}, .friction = 0.6},
+                                    {.a = {-5, 0}, .b = {-5, 25}, .friction = 0.6},
+                                    {.a = {5, 0}, .b = {5, 25}, .friction = 0.6}}};
 
 // A small fixed generator (splitmix64), so every engine gets the same jumble on every machine.
 double uniform(std::uint64_t& state) {
@@ -27,9 +28,9 @@ void build(Sim& sim, int bodies) {
     for (const LineSpec& line : kBin) sim.addLine(line);
     std::uint64_t seed = 26;
     const Vec2 sizes[] = {{0.1, 0.1}, {0.2, 0.2}, {0.3, 0.15}, {0.5, 0.1}, {0.25, 0.25}};
-    // Rows of five 1.1 m apart from y = 2 m, jittered, every third body a ball.
+    // Rows of ten 0.9 m apart from y = 1.5 m, jittered, every third body a ball.
     for (int k = 0; k < bodies; ++k) {
-        const Vec2 at{-2.2 + (k % 5) * 1.1 + 0.2 * (uniform(seed) - 0.5), 2.0 + (k / 5) * 1.1};
+        const Vec2 at{-4.05 + (k % 10) * 0.9 + 0.2 * (uniform(seed) - 0.5), 1.5 + (k / 10) * 0.9};
         if (k % 3 == 2) {
             sim.addBall(
                 {.position = at, .radius = 0.1 + 0.2 * uniform(seed), .mass = 0.5, .bounciness = 0.2, .friction = 0.6});
@@ -60,7 +61,7 @@ public:
     .gravity = {0.0, -9.81},
     .duration = [](const SceneSize& size) { return size.quick ? 1.0 : 5.0; },
     .boundsMin = {-10, -5},
-    .boundsMax = {10, 60},
+    .boundsMax = {10, 40},
     .build = [](Sim& sim, const SceneSize& size) { build(sim, size.quick ? 40 : 200); },
     .probe = [](const SceneSize&, double) { return std::make_unique<BinProbe>(); },
     .boxes = true,

@@ -57,7 +57,9 @@ TEST_CASE("the level index reports bad entries at their place", "[index]") {
     CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"a\"\ndifficulty = 1\n"
                                      "[[level]]\nfile = \"ramp.toml\"\ntitle = \"b\"\ndifficulty = 1\n",
                                      "i.toml", kLevels)) == "i.toml:6:8: 'ramp.toml' is listed already, at line 1");
-    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml",
-                                     kLevels))
-              .find("unknown key 'titel' in [[level]] (did you mean 'title'?)") != std::string::npos);
+    // The misspelt key is offered the right one (after 'title' is reported missing, at the table's place).
+    const LevelIndexLoad misspelt = parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n",
+                                                    "i.toml", kLevels);
+    REQUIRE(misspelt.errors.size() == 2);
+    CHECK(misspelt.errors[1].format() == "i.toml:3:1: unknown key 'titel' in [[level]] (did you mean 'title'?)");
 }

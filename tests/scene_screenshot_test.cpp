@@ -75,7 +75,7 @@ render::Image renderGolden(const Golden& golden) {
         view.afterStep(world);
     }
     render::DrawList list;
-    view.draw(world, golden.frame, list);
+    view.draw(world, list);
     return renderer().render(list, view.camera());
 }
 

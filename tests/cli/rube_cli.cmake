@@ -3,12 +3,15 @@
 # Checks, each optional:
 #   STDOUT_MATCH=<regex>     stdout matches
 #   STDERR_LINE=<text>       stderr is exactly this one line
+#   STDERR_MATCH=<regex>     stderr matches
 #   STDERR_FIXTURE=<file>    stderr is exactly "<file>:<the fixture's '# expect: ' line>"
 #   STDERR_FIXTURE_ALL=<file> stderr is exactly one "<file>:<line>" for each of the fixture's
 #                            '# expect: ' lines, in their order (every error, not just the first)
 #   TRACE=<file>             removed before the run (with any leftover temporaries)
 #   NO_TRACE=ON              afterwards neither the trace nor a temporary beside it exists
 #   ROWS=<n>                 the trace has the exact header and n rows of 10 fields, none left over
+#   LEVEL_ROWS=<n>           as ROWS for a level's trace: step,time,body,item,... and n rows of 11 fields
+#   TRACE_MATCH=<regex>      the trace's whole text matches
 #   STDERR_EMPTY=ON          nothing on stderr (no note, no progress line when it is not a terminal)
 #   FRAMES_DIR=<dir>         removed before the run, with everything in it
 #   SEED_FRAMES=<n>          before the run, FRAMES_DIR holds n dummy frames of an earlier run and notes.txt
@@ -84,6 +87,9 @@ if(DEFINED STDERR_FIXTURE_ALL)
     fail("stderr is not the expected lines:\n${wanted}")
   endif()
 endif()
+if(DEFINED STDERR_MATCH AND NOT err MATCHES "${STDERR_MATCH}")
+  fail("stderr does not match ${STDERR_MATCH}:\n${err}")
+endif()
 if(DEFINED STDERR_LINE AND NOT err STREQUAL "${STDERR_LINE}\n")
   fail("stderr is not the one expected line:\n${STDERR_LINE}")
 endif()
@@ -116,6 +122,33 @@ if(DEFINED ROWS)
   file(GLOB left "${TRACE}.tmp-*")
   if(left)
     fail("the run left its temporary file ${left}")
+  endif()
+endif()
+if(DEFINED LEVEL_ROWS)
+  if(NOT EXISTS "${TRACE}")
+    fail("no trace was written to ${TRACE}")
+  endif()
+  file(STRINGS "${TRACE}" lines)
+  list(LENGTH lines count)
+  math(EXPR rows "${count} - 1")
+  list(GET lines 0 header)
+  if(NOT header STREQUAL "step,time,body,item,x,y,vx,vy,angle,omega,radius")
+    fail("level trace header is '${header}'")
+  endif()
+  if(NOT rows EQUAL LEVEL_ROWS)
+    fail("level trace has ${rows} rows, expected ${LEVEL_ROWS}")
+  endif()
+  foreach(row IN LISTS lines)
+    # CMake's regular expressions have no {6}: six numbers spelt out, then the radius (empty for a box).
+    if(NOT row STREQUAL header AND NOT row MATCHES "^[0-9]+,[-+0-9.e]+,[cb][0-9]+,[^,]*,[-+0-9.e]+,[-+0-9.e]+,[-+0-9.e]+,[-+0-9.e]+,[-+0-9.e]+,[-+0-9.e]+,([-+0-9.e]+)?$")
+      fail("level trace row '${row}' is not step,time,body,item and 7 numbers")
+    endif()
+  endforeach()
+endif()
+if(DEFINED TRACE_MATCH)
+  file(READ "${TRACE}" trace_text)
+  if(NOT trace_text MATCHES "${TRACE_MATCH}")
+    fail("the trace does not match ${TRACE_MATCH}")
   endif()
 endif()
 if(STDERR_EMPTY AND NOT err STREQUAL "")

@@ -95,7 +95,7 @@ TEST_CASE("every shipped solution script reads, writes and reads back to the sam
 }
 
 TEST_CASE("every key a script may hold is written back as it was read", "[level][script]") {
-    // Between them, these use every action, every kind of expectation, steps, a named and a
+    // Between them, these use every action, every kind of expectation (with and without `by`), steps, a named and a
     // turned placement, aims at an angle (with and without an arc), a point and an item, and
     // numbers that are not short in binary (0.1, 1/3 written out).
     const SceneDesc cannon = loadLevel(kLevels / "cannon-arc.toml");
@@ -106,14 +106,16 @@ TEST_CASE("every key a script may hold is written back as it was read", "[level]
                    "[[action]]\nstep = 2\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"low\"\n"
                    "[[action]]\nstep = 3\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"bullseye\"\n"
                    "[[action]]\nstep = 9\ndo = \"fire\"\nitem = \"gun\"\n"
-                   "[[expect]]\nshot = \"gun\"\nbefore_step = 10\n[[expect]]\nhit = \"bullseye\"\nbefore_step = 500\n",
+                   "[[expect]]\nshot = \"gun\"\nbefore_step = 10\n[[expect]]\nhit = \"bullseye\"\nby = "
+                   "\"gun\"\nbefore_step = 500\n",
                    "cannon-arc every key", cannon);
     const SceneDesc chain = loadLevel(kLevels / "chain-reaction.toml");
     checkRoundTrip("level = \"chain-reaction\"\n[capture]\nsize = [320, 180]\n"
                    "[[place]]\nkind = \"heavy\"\nposition = [-4.05, 5.1]\nname = \"lump \\\"one\\\"\"\n"
                    "[[action]]\nstep = 4\ndo = \"toggle\"\nitem = \"button\"\n"
                    "[[action]]\nstep = 7\ndo = \"detonate\"\nitem = \"tnt\"\n"
-                   "[[expect]]\nexplosion = \"tnt\"\nbefore_step = 8\n[[expect]]\ngoal = true\nbefore_step = 900\n",
+                   "[[expect]]\nexplosion = \"tnt\"\nbefore_step = 8\n[[expect]]\ngoal = true\nby = \"lump "
+                   "\\\"one\\\"\"\nbefore_step = 900\n",
                    "chain-reaction every key", chain);
     const SceneDesc rope = loadLevel(kLevels / "rope.toml");
     checkRoundTrip("level = \"rope\"\n[[action]]\nstep = 5\ndo = \"cut\"\nitem = \"rope\"\n", "rope cut", rope);

@@ -57,19 +57,6 @@ bool TraceWriter::open(const std::filesystem::path& target, std::string& error, 
     return true;
 }
 
-void TraceWriter::writeState(const World& world) {
-    if (!file_) return;
-    const long long step = static_cast<long long>(world.stats().steps);
-    const auto circles = world.circles();
-    for (std::size_t i = 0; i < circles.size(); ++i) {
-        const Circle& c = circles[i];
-        if (c.motion != Motion::dynamic) continue;
-        std::fprintf(file_, "%lld,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", step, world.time(), i,
-                     c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.angle, c.angularVelocity, c.radius);
-        ++rows_;
-    }
-}
-
 namespace {
 
 // A name as one CSV field: quoted, with quotes doubled, when it holds a comma, quote or line break.
@@ -82,20 +69,32 @@ std::string csvField(const std::string& text) {
 
 } // namespace
 
-void TraceWriter::writeLevelState(const World& world, const std::function<std::string(CircleId)>& circleName,
-                                  const std::function<std::string(int)>& bodyName) {
-    if (!file_) return;
+void TraceWriter::writeCircles(const World& world, const std::function<std::string(CircleId)>* circleName) {
     const long long step = static_cast<long long>(world.stats().steps);
     const auto circles = world.circles();
     for (std::size_t i = 0; i < circles.size(); ++i) {
         const Circle& c = circles[i];
         if (c.motion != Motion::dynamic) continue;
-        const std::string name = csvField(circleName(world.circleId(static_cast<int>(i))));
-        std::fprintf(file_, "%lld,%.17g,c%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", step, world.time(), i,
-                     name.c_str(), c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.angle, c.angularVelocity,
-                     c.radius);
+        // A scene's row names the circle by its slot; a level's by c<slot> and its item's name.
+        if (circleName)
+            std::fprintf(file_, "%lld,%.17g,c%zu,%s,", step, world.time(), i,
+                         csvField((*circleName)(world.circleId(static_cast<int>(i)))).c_str());
+        else std::fprintf(file_, "%lld,%.17g,%zu,", step, world.time(), i);
+        std::fprintf(file_, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", c.position.x, c.position.y, c.velocity.x,
+                     c.velocity.y, c.angle, c.angularVelocity, c.radius);
         ++rows_;
     }
+}
+
+void TraceWriter::writeState(const World& world) {
+    if (file_) writeCircles(world, nullptr);
+}
+
+void TraceWriter::writeLevelState(const World& world, const std::function<std::string(CircleId)>& circleName,
+                                  const std::function<std::string(int)>& bodyName) {
+    if (!file_) return;
+    writeCircles(world, &circleName);
+    const long long step = static_cast<long long>(world.stats().steps);
     const auto bodies = world.bodies();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& b = bodies[i];

@@ -49,6 +49,8 @@ public:
     std::int64_t rows() const { return rows_; }
 
 private:
+    void writeCircles(const World& world, const std::function<std::string(CircleId)>* circleName);
+
     std::FILE* file_ = nullptr;
     std::filesystem::path target_;
     std::filesystem::path temporary_;

@@ -301,8 +301,9 @@ foreach(script script-errors.toml placements.solution.toml no-heavy.toml)
   rube_cli_test("check script ${script}" "check|--level|${PROJECT_SOURCE_DIR}/levels/ramp.toml|${lint}/${script}" 2
                 -DSTDERR_FIXTURE_ALL=${lint}/${script})
 endforeach()
-# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch.
-foreach(stem zones-typo switch-empty)
+# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch,
+# and one aimed at nothing it can switch (an empty name, a target) is refused: an error, not only a lint warning.
+foreach(stem zones-typo switch-empty switch-target)
   rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2

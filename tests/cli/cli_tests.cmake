@@ -353,3 +353,5 @@ rube_cli_test("scene --labels is refused" "run|${RUBE_LEVELS}/bounce.toml|--out|
               "-DSTDERR_LINE=rube run: --labels is for levels, and ${RUBE_LEVELS}/bounce.toml is a physics scene: it has no items or placement zones")
 rube_cli_test("usage --zones without --out" "run|${RUBE_GAME_LEVELS}/ramp.toml|--zones" 2
               "-DSTDERR_LINE=rube: --zones requires --out or --video (see 'rube run --help')")
+rube_cli_test("help run explains steps, frames and the level options" "run|--help" 0
+              "-DSTDOUT_MATCH=--labels .*--zones .*A step is one step of the simulation, a frame one picture.*step,time,body,item,x,y,vx,vy,angle,omega,radius.*'not reached in\n  time'")

@@ -31,6 +31,8 @@ Key toKey(int key) {
     case GLFW_KEY_DOWN: return Key::down;
     case GLFW_KEY_LEFT_BRACKET: return Key::leftBracket;
     case GLFW_KEY_RIGHT_BRACKET: return Key::rightBracket;
+    case GLFW_KEY_LEFT_CONTROL: return Key::control;
+    case GLFW_KEY_RIGHT_CONTROL: return Key::control;
     default: return Key::other;
     }
 }

@@ -3,6 +3,8 @@
 // At an integer scale and position the rectangles sit on pixel boundaries, so text is crisp.
 #include "shape_instance.hpp"
 
+#include "rube/render/draw_list.hpp"
+
 #include <stb_easy_font.h>
 
 #include <string>
@@ -43,6 +45,12 @@ void appendTextInstances(std::string_view text, int x, int y, int scale, Color c
         box.outline = color;
         out.push_back(box);
     }
+}
+
+int textWidth(std::string_view text, int scale) {
+    thread_local std::string buffer;
+    buffer.assign(text);
+    return stb_easy_font_width(buffer.data()) * scale;
 }
 
 } // namespace rube::render

@@ -157,4 +157,7 @@ private:
     std::string characters_;
 };
 
+/// How many pixels wide text() draws `text` at `scale`, so a line can be fitted to its frame.
+int textWidth(std::string_view text, int scale = 2);
+
 } // namespace rube::render

@@ -18,6 +18,7 @@ enum class Key {
     down,
     leftBracket,
     rightBracket,
+    control, ///< either Control key: the play window's Ctrl+Z and Ctrl+Y
     a,
     b,
     c,

@@ -9,6 +9,7 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kZoneKeys[] = {"min", "max"};
+constexpr std::string_view kHintKeys[] = {"text"};
 constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "time_limit"};
 constexpr std::string_view kConditionNames[] = {"target-hit", "ball-in-bucket", "all-targets"};
 
@@ -90,6 +91,20 @@ void readZones(TableReader& root, SceneReading& reading) {
     }
 }
 
+// Hints, in the order the player is shown them (H in the play window).
+void readHints(TableReader& root, SceneReading& reading) {
+    for (const toml::table* table : root.arrayOfTables("hint")) {
+        TableReader hint(*table, "in [[hint]]", kHintKeys, reading.diag);
+        const auto text = hint.string("text", Need::required);
+        if (!text) continue;
+        if (text->find_first_not_of(" \t\n") == std::string::npos) {
+            hint.error(hint.valuePlace("text"), "a hint's text must not be empty");
+            continue;
+        }
+        reading.scene.level.hints.push_back({*text, hint.tablePlace()});
+    }
+}
+
 // A name must refer to an item of the right kind; the message lists the ones that would do.
 void checkReference(Diagnostics& diag, SourcePlace place, std::string_view key, const std::string& name, PartRole role,
                     const LevelDesc& level) {
@@ -150,6 +165,7 @@ void readLevel(TableReader& root, SceneReading& reading) {
     readInventory(root, reading);
     readZones(root, reading);
     readGoal(root, reading);
+    readHints(root, reading);
     // References between items (a switch's `triggers`) are checked once every item is known, so a
     // switch may name a later cannon.
     for (const ItemDesc& item : reading.scene.level.items) item.kind->checkReferences(item, reading);

@@ -191,10 +191,15 @@ bool LevelRun::ballRestsIn(const ItemDesc& bucket) const {
     return false;
 }
 
+bool LevelRun::timeUp() const {
+    const auto& goal = scene_.level.goal;
+    return goal && !goalFrame_ && goal->timeLimit && pastTimeLimit(*goal->timeLimit);
+}
+
 void LevelRun::checkGoal() {
     const auto& goal = scene_.level.goal;
     if (!goal || goalFrame_) return;
-    if (goal->timeLimit && world_.time() > *goal->timeLimit + 1e-9) return;
+    if (goal->timeLimit && pastTimeLimit(*goal->timeLimit)) return;
     bool reached = false;
     switch (goal->kind) {
     case GoalKind::targetHit: {

@@ -3,6 +3,7 @@
 #include "level_view.hpp"
 
 #include "scene_view.hpp"
+#include "script_file.hpp"
 
 #include "rube/render/palette.hpp"
 
@@ -74,7 +75,12 @@ std::string LevelView::goalLine(const LevelRun& run) const {
     if (!run.goal()) return "no goal";
     // The status first, so a long goal text cut off at the frame's edge never hides it.
     if (run.goalFrame()) return "REACHED at frame " + std::to_string(*run.goalFrame()) + ": " + run.goal()->text;
+    if (run.timeUp()) return timeUpLine(*run.goal());
     return "goal: " + run.goal()->text;
+}
+
+std::string LevelView::timeUpLine(const Goal& goal) {
+    return "TIME UP after " + scriptNumber(*goal.timeLimit) + " s: " + goal.text;
 }
 
 void LevelView::drawHud(const LevelRun& run, std::int64_t frame, render::DrawList& list) const {
@@ -89,7 +95,10 @@ void LevelView::drawHud(const LevelRun& run, std::int64_t frame, render::DrawLis
                   run.world().time());
     list.text(kHudMargin, kHudMargin, line, palette["hud_text"], kHudScale);
     list.text(kHudMargin, kHudMargin + kHudLineHeight, goalLine(run),
-              run.goalFrame() ? palette["goal"] : palette["hud_text"], kHudScale);
+              run.goalFrame() ? palette["goal"]
+              : run.timeUp()  ? palette["magnet"]
+                              : palette["hud_text"],
+              kHudScale);
 }
 
 void LevelView::draw(const LevelRun& run, std::int64_t frame, render::DrawList& list) const {

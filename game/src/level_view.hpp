@@ -22,6 +22,8 @@ public:
     void draw(const LevelRun& run, std::int64_t frame, render::DrawList& list) const;
     /// The HUD's goal line: the goal's text and whether it is reached.
     std::string goalLine(const LevelRun& run) const;
+    /// The goal line once the time limit has passed without the goal (the play window's fail state).
+    static std::string timeUpLine(const Goal& goal);
     /// The camera every frame is drawn through.
     const render::Camera& camera() const { return camera_; }
 

@@ -128,14 +128,12 @@ TEST_CASE("play: items dragged from the bar are placed, counted, moved, turned a
     // Outside every zone: refused with the rule's reason, and the plank is back in the bar.
     place(s, partKind("plank"), {6.0, 3.0});
     CHECK(s.placements().size() == 1);
-    CHECK_THAT(
-        s.message(),
-        Catch::StartsWith("not placed: placement refused: plank at [6, 3] is not wholly inside a placement zone"));
+    CHECK_THAT(s.message(), Catch::StartsWith("not placed: plank at [6, 3]: not inside a zone (it spans"));
     CHECK(s.remaining(partKind("plank")) == 1);
 
     // Onto the first plank: refused for the overlap.
     place(s, partKind("plank"), {-2.0, 3.0});
-    CHECK_THAT(s.message(), Catch::Contains("overlaps placement 1 (plank)"));
+    CHECK_THAT(s.message(), Catch::Contains("overlaps your plank (placement 1)"));
 
     // The wheel turns a placed plank under the cursor by 15 degrees a notch; a ball does not turn.
     moveTo(s, {-2.0, 3.0});

@@ -3,6 +3,7 @@
 // script, replayed off-screen by the `rube` binary, and the window's level area at a step is
 // compared with the off-screen frame of the same step, with the screenshot tests' thresholds.
 #include "play_session.hpp"
+#include "play_visit.hpp"
 #include "scene_file.hpp"
 
 #include "rube/render/renderer.hpp"
@@ -84,11 +85,11 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     REQUIRE(slot);
     // A ramp dropped on the floor, outside the zone, is refused with the reason and goes back.
     dragTo(session, *slot, session.pixelOf({2.0, 0.3}));
-    CHECK_THAT(session.message(), Catch::Contains("placement refused: ramp"));
+    CHECK_THAT(session.message(), Catch::StartsWith("ramp at [2, 0.3]: "));
     render::writePng(kWork / "window-refused.png", show());
     session.mouseButton(MouseButton::left, false);
     CHECK(session.placements().empty());
-    CHECK_THAT(session.message(), Catch::StartsWith("not placed: placement refused: ramp"));
+    CHECK_THAT(session.message(), Catch::StartsWith("not placed: ramp at [2, 0.3]: "));
     CHECK(session.remaining(partKind("ramp")) == 1);
 
     // Then into the zone, turned twice by the wheel (2 x -15 degrees), and released.
@@ -187,4 +188,157 @@ TEST_CASE("a cannon aimed with the mouse and fired by a click replays to the sam
                                                                   RUBE_SCREENSHOT_FAILURES_DIR "/window-play-cannon");
     INFO(check.message);
     CHECK(check.passed);
+}
+
+namespace {
+
+// Pixels of `colour` (to within a few levels, for blending) in the rows [top, bottom) of `image`.
+int pixelsOf(const render::Image& image, render::Color colour, int top, int bottom) {
+    int count = 0;
+    for (int y = top; y < bottom; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = image.pixel(x, y);
+            if (std::abs(p[0] - colour.r) <= 8 && std::abs(p[1] - colour.g) <= 8 && std::abs(p[2] - colour.b) <= 8)
+                ++count;
+        }
+    return count;
+}
+
+} // namespace
+
+TEST_CASE("the fail state in a window: past the time limit the HUD turns to TIME UP and R retries", "[window][play]") {
+    constexpr render::FrameSize frame{640, 360};
+    const SceneDesc desc = level("cannon-arc");
+    REQUIRE(desc.level.goal->timeLimit);
+    PlaySession session(desc, (kLevels / "cannon-arc.toml").string(), frame);
+    render::WindowOptions options;
+    options.vsync = false;
+    std::unique_ptr<render::RenderContext> window = render::createWindowContext(session.windowSize(), options);
+    render::Renderer renderer(*window);
+    render::DrawList list;
+    const auto show = [&] {
+        session.draw(list);
+        renderer.draw(list, session.windowCamera());
+        render::Image image;
+        window->readPixels(image);
+        window->present();
+        return image;
+    };
+    // The HUD's goal line (rows 26 to 40 of the level area) is in the fail colour only once the
+    // time is up; nothing was placed and the gun never fires, so the goal is missed.
+    const render::Color failColour = render::Palette::greybox()["magnet"];
+    session.key(Key::space, KeyAction::press);
+    const auto limitSteps = static_cast<std::int64_t>(std::floor(*desc.level.goal->timeLimit / 0.01 + 1e-6));
+    while (session.run()->frame() < limitSteps) session.step();
+    const render::Image inTime = show();
+    CHECK_FALSE(session.timeUp());
+    session.step();
+    REQUIRE(session.timeUp());
+    const render::Image late = show();
+    std::filesystem::create_directories(kWork);
+    render::writePng(kWork / "window-time-up.png", late);
+    CHECK(pixelsOf(inTime, failColour, 24, 42) < 5);
+    CHECK(pixelsOf(late, failColour, 24, 42) > 100);
+    // The bar's message line says so too, in the same colour.
+    const int bar = frame.height + InventoryBar::kHeight - 20;
+    CHECK(pixelsOf(late, failColour, bar, bar + 16) > 100);
+    session.key(Key::r, KeyAction::press);
+    CHECK(session.mode() == PlaySession::Mode::editing);
+    CHECK(pixelsOf(show(), failColour, 24, 42) < 5);
+}
+
+TEST_CASE(
+    "a visit in a window: from the level list to a level and its solution then N to the next and Esc back to the list",
+    "[window][play]") {
+    const LevelIndexLoad index = loadLevelIndex(kLevels / "index.toml");
+    REQUIRE(index.levels);
+    const std::vector<IndexedLevel>& levels = *index.levels;
+    std::filesystem::create_directories(kWork);
+    const std::filesystem::path progressFile = kWork / "visit-progress" / "solved.txt";
+    std::filesystem::remove_all(progressFile.parent_path());
+    // The third level was solved before: its solution may be watched (W).
+    {
+        Progress before(progressFile);
+        std::string reason;
+        REQUIRE(before.markSolved(levelKey(levels[2].file), reason));
+    }
+    VisitOptions options;
+    options.levelFrame = {640, 360};
+    options.progressFile = progressFile;
+    std::vector<std::string> ended;
+    PlayVisit visit(
+        levels, std::nullopt, options,
+        [&](const PlaySession& session, const SceneDesc& scene) {
+            ended.push_back(scene.name + (session.run() && session.run()->goalFrame() ? " reached" : ""));
+        },
+        [](const std::string& message) { FAIL(message); });
+    render::WindowOptions windowOptions;
+    windowOptions.vsync = false;
+    std::unique_ptr<render::RenderContext> window = render::createWindowContext(visit.windowSize(), windowOptions);
+    render::Renderer renderer(*window);
+    render::DrawList list;
+    const auto show = [&] {
+        visit.tick(0.0);
+        visit.draw(list);
+        renderer.draw(list, visit.camera());
+        render::Image image;
+        window->readPixels(image);
+        window->present();
+        return image;
+    };
+    const auto press = [&](Key key) {
+        visit.key(key, KeyAction::press);
+        visit.key(key, KeyAction::release);
+    };
+
+    // The list: the highlight is on the selected row and follows Down.
+    REQUIRE(visit.list());
+    const render::Color highlight = render::Palette::greybox()["highlight"];
+    const auto rowHighlighted = [&](const render::Image& image, std::size_t row) {
+        const int y = static_cast<int>(visit.list()->rowPixel(row).y);
+        return pixelsOf(image, highlight, y - 12, y - 10) > 100; // the highlight's top edge
+    };
+    render::Image image = show();
+    CHECK(rowHighlighted(image, 0));
+    CHECK_FALSE(rowHighlighted(image, 2));
+    press(Key::down);
+    press(Key::down);
+    image = show();
+    render::writePng(kWork / "window-level-list.png", image);
+    CHECK(rowHighlighted(image, 2));
+    CHECK_FALSE(rowHighlighted(image, 0));
+    CHECK_THAT(visit.list()->rowText(2), Catch::EndsWith("solved"));
+    press(Key::enter);
+    show();
+    REQUIRE(visit.session());
+    CHECK(std::filesystem::equivalent(visit.levelFile(), levels[2].file));
+
+    // Solved before, so W plays the intended solution to its goal; N then opens the next level.
+    press(Key::w);
+    REQUIRE(visit.session()->mode() == PlaySession::Mode::running);
+    while (!visit.session()->run()->goalFrame() && visit.session()->run()->frame() < 3000) {
+        visit.session()->step();
+        if (visit.session()->run()->frame() % 50 == 0) show();
+    }
+    REQUIRE(visit.session()->run()->goalFrame());
+    press(Key::n);
+    show();
+    REQUIRE(visit.session());
+    CHECK(std::filesystem::equivalent(visit.levelFile(), levels[3].file));
+    REQUIRE(ended.size() == 1);
+    CHECK_THAT(ended[0], Catch::EndsWith(" reached"));
+
+    // Escape goes back to the list, on the level just left; the progress file has both.
+    press(Key::escape);
+    show();
+    REQUIRE(visit.list());
+    CHECK(visit.list()->selected() == 3);
+    CHECK_FALSE(visit.finished());
+    const Progress after(progressFile);
+    CHECK(after.solved(levelKey(levels[2].file)));
+    CHECK_FALSE(after.solved(levelKey(levels[3].file)));
+    press(Key::escape);
+    visit.tick(0.0);
+    CHECK(visit.finished());
+    CHECK(ended.size() == 2);
 }

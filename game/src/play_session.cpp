@@ -78,12 +78,9 @@ render::Point PlaySession::pixelOf(Vec2 world) const { return bar_.toPixel(world
 // Running
 
 void PlaySession::start() {
-    if (drag_) {
-        if (drag_->liftedFrom)
-            placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
-        drag_.reset();
-    }
+    cancelDrag();
     aiming_ = -1;
+    timeUpSaid_ = false;
     run_ = std::make_unique<LevelRun>(level_, placements_);
     // The aims are the script's frame-0 actions, taken the way `rube run` takes them.
     for (const auto& [item, action] : aims_) takeAction(action, *run_);
@@ -122,13 +119,12 @@ void PlaySession::reset() {
 }
 
 void PlaySession::step() {
-    if (!run_) return;
+    if (!run_ || (stopAt_ && run_->frame() >= *stopAt_)) return;
     const bool reachedBefore = run_->goalFrame().has_value();
     run_->step();
     trails_->record(run_->world());
     takeScripted();
-    if (!reachedBefore && run_->goalFrame())
-        say("GOAL REACHED at frame " + std::to_string(*run_->goalFrame()) + " - R edits again, Esc quits", "goal");
+    goalMessages(reachedBefore);
 }
 
 void PlaySession::advance(double seconds) {

@@ -221,7 +221,13 @@ rube_play_test("--record into a missing folder" "${RUBE_GAME_LEVELS}/ramp.toml|-
 rube_play_test("a bad --script is reported at its place" "${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
                "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
 rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit-after|0" 2
-               "-DSTDERR_LINE=rube: --quit-after: expected a whole number of frames from 1 to 1000000000, got '0' (see 'rube play --help')")
+               "-DSTDERR_LINE=rube: --quit-after: expected a whole number of steps from 1 to 1000000000, got '0' (see 'rube play --help')")
+# Issue 23: with no LEVEL, the list of the index's levels; an index that cannot be read is one
+# line naming it, before any window is asked for; a --script needs its level.
+rube_play_test("no level and an index that is not there" "--index|${RUBE_CLI_OUT}/no-index.toml" 2
+               "-DSTDERR_LINE=${RUBE_CLI_OUT}/no-index.toml: cannot open file (no LEVEL given, so 'rube play' lists the levels of ${RUBE_CLI_OUT}/no-index.toml: give a LEVEL or --index FILE)")
+rube_play_test("a --script without a level" "--script|${RUBE_GAME_LEVELS}/ramp.solution.toml" 2
+               "-DSTDERR_LINE=rube play: --script needs a LEVEL: the script belongs to one level")
 
 # Methods without a broadphase (discrete, turn-based, exact) refuse a scene whose pair tests exceed
 # 2^22 (issue 27: 100,000 circles under exact took 10 GB and minutes a step): status 2, one line
@@ -268,6 +274,7 @@ rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
 # solution), and the script reads against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
 list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the level index, no level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)
   set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)

@@ -1,6 +1,7 @@
 // Level files: the tables a level adds to a scene, [[item]], [inventory], [[zone]] and [goal],
 // read by the same TableReader as every other table so that errors look the same everywhere.
 #include "scene_reading.hpp"
+#include "toml_writer.hpp"
 
 #include <numbers>
 
@@ -60,6 +61,13 @@ void readItem(const toml::table& table, SceneReading& reading) {
     item.name = name;
     item.place = reader.tablePlace();
     (*kind)->read(reader, item, reading);
+    // What the level writer needs to write the item back as it was read.
+    if (const toml::node* angle = table.get("angle"); angle && (angle->is_integer() || angle->is_floating_point()))
+        item.angleDegrees = angle->value<double>();
+    for (const auto& [key, value] : table) {
+        if (key == "kind" || key == "name" || key == "position" || key == "angle") continue;
+        item.ownLines.push_back(std::string(key.str()) + " = " + tomlValue(value));
+    }
     reading.scene.level.items.push_back(item);
 }
 

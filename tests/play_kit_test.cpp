@@ -2,6 +2,7 @@
 // grid and the cursor's coordinates, refusals that fit the bar, hints, the intended solution
 // after a level is solved, N, a switch clicked by hand, the progress file and the level list.
 #include "level_select.hpp"
+#include "play_helpers.hpp"
 #include "play_session.hpp"
 #include "progress.hpp"
 #include "scene_file.hpp"
@@ -21,32 +22,16 @@ using namespace rube::game;
 using render::Key;
 using render::KeyAction;
 using render::MouseButton;
+using namespace rube::game::play_test;
 
 namespace {
 
-const std::filesystem::path kLevels = RUBE_GAME_LEVELS_DIR;
 constexpr render::FrameSize kFrame{640, 360};
 
 // A bench: a floor, a gun a switch fires, a target out of reach, planks and a ball to place.
 // `extra` is appended (a [goal] time limit, hints).
 SceneDesc bench(const std::string& extra = "", const std::string& goalExtra = "") {
-    const std::string text = R"(
-name = "bench"
-[world]
-time_step = 0.01
-bounds = { min = [-20, -5], max = [20, 30] }
-[view]
-min = [-8, -1]
-max = [8, 8]
-[[segment]]
-a = [-8, 0]
-b = [8, 0]
-[[item]]
-kind = "cannon"
-name = "gun"
-position = [-6, 0.6]
-angle = 30
-speed = 10
+    const std::string text = "name = \"bench\"" + std::string(kTestBench) + R"(
 [[item]]
 kind = "switch"
 name = "button"
@@ -56,41 +41,12 @@ triggers = "gun"
 kind = "target"
 name = "flag"
 position = [6, 7]
-[inventory]
-plank = 2
-heavy = 1
-[[zone]]
-min = [-4, 1]
-max = [4, 6]
-[goal]
-text = "hit the flag"
-condition = "target-hit"
-target = "flag"
-)" + goalExtra + "\n" + extra;
+)" + std::string(kTestStock) +
+                             goalExtra + "\n" + extra;
     const SceneLoad load = parseScene(text, "bench.toml");
     INFO((load.errors.empty() ? std::string() : load.errors.front().format()));
     REQUIRE(load.ok());
     return *load.scene;
-}
-
-SceneDesc loadLevel(const std::string& name) {
-    const SceneLoad load = loadSceneFile(kLevels / (name + ".toml"));
-    REQUIRE(load.ok());
-    return *load.scene;
-}
-
-void moveTo(PlaySession& s, Vec2 world) {
-    const render::Point p = s.pixelOf(world);
-    s.cursorMoved(p.x, p.y);
-}
-
-void place(PlaySession& s, ItemKind kind, Vec2 at) {
-    const auto slot = s.slotPixel(kind);
-    REQUIRE(slot);
-    s.cursorMoved(slot->x, slot->y);
-    s.mouseButton(MouseButton::left, true);
-    moveTo(s, at);
-    s.mouseButton(MouseButton::left, false);
 }
 
 void press(PlaySession& s, Key key) {

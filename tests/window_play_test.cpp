@@ -192,6 +192,31 @@ TEST_CASE("a cannon aimed with the mouse and fired by a click replays to the sam
 
 namespace {
 
+// A real window of `size` pixels that shows what a session or a visit draws, and reads it back.
+class TestWindow {
+public:
+    explicit TestWindow(render::FrameSize size) : window_(open(size)), renderer_(*window_) {}
+    template <class Screen>
+    render::Image show(const Screen& screen, const render::Camera& camera) {
+        screen.draw(list_);
+        renderer_.draw(list_, camera);
+        render::Image image;
+        window_->readPixels(image);
+        window_->present();
+        return image;
+    }
+
+private:
+    static std::unique_ptr<render::RenderContext> open(render::FrameSize size) {
+        render::WindowOptions options;
+        options.vsync = false;
+        return render::createWindowContext(size, options);
+    }
+    std::unique_ptr<render::RenderContext> window_;
+    render::Renderer renderer_;
+    render::DrawList list_;
+};
+
 // Pixels of `colour` (to within a few levels, for blending) in the rows [top, bottom) of `image`.
 int pixelsOf(const render::Image& image, render::Color colour, int top, int bottom) {
     int count = 0;
@@ -211,19 +236,8 @@ TEST_CASE("the fail state in a window: past the time limit the HUD turns to TIME
     const SceneDesc desc = level("cannon-arc");
     REQUIRE(desc.level.goal->timeLimit);
     PlaySession session(desc, (kLevels / "cannon-arc.toml").string(), frame);
-    render::WindowOptions options;
-    options.vsync = false;
-    std::unique_ptr<render::RenderContext> window = render::createWindowContext(session.windowSize(), options);
-    render::Renderer renderer(*window);
-    render::DrawList list;
-    const auto show = [&] {
-        session.draw(list);
-        renderer.draw(list, session.windowCamera());
-        render::Image image;
-        window->readPixels(image);
-        window->present();
-        return image;
-    };
+    TestWindow window(session.windowSize());
+    const auto show = [&] { return window.show(session, session.windowCamera()); };
     // The HUD's goal line (rows 26 to 40 of the level area) is in the fail colour only once the
     // time is up; nothing was placed and the gun never fires, so the goal is missed.
     const render::Color failColour = render::Palette::greybox()["magnet"];
@@ -272,19 +286,10 @@ TEST_CASE(
             ended.push_back(scene.name + (session.run() && session.run()->goalFrame() ? " reached" : ""));
         },
         [](const std::string& message) { FAIL(message); });
-    render::WindowOptions windowOptions;
-    windowOptions.vsync = false;
-    std::unique_ptr<render::RenderContext> window = render::createWindowContext(visit.windowSize(), windowOptions);
-    render::Renderer renderer(*window);
-    render::DrawList list;
+    TestWindow window(visit.windowSize());
     const auto show = [&] {
         visit.tick(0.0);
-        visit.draw(list);
-        renderer.draw(list, visit.camera());
-        render::Image image;
-        window->readPixels(image);
-        window->present();
-        return image;
+        return window.show(visit, visit.camera());
     };
     const auto press = [&](Key key) {
         visit.key(key, KeyAction::press);

@@ -182,31 +182,22 @@ void PlaySession::cancelDrag() {
     drag_.reset();
 }
 
-bool PlaySession::undo() {
+bool PlaySession::undo() { return travel(true); }
+
+bool PlaySession::redo() { return travel(false); }
+
+bool PlaySession::travel(bool back) {
     if (run_) return false; // the machine runs what was placed; R first
     cancelDrag();
     aiming_ = -1;
     Edits now = edits();
-    if (!history_.undo(now)) {
-        say("nothing to undo");
+    if (!(back ? history_.undo(now) : history_.redo(now))) {
+        say(back ? "nothing to undo" : "nothing to redo");
         return false;
     }
     restore(std::move(now));
-    say("undone (" + std::to_string(history_.undoable()) + " more to undo, Ctrl+Y redoes)");
-    return true;
-}
-
-bool PlaySession::redo() {
-    if (run_) return false;
-    cancelDrag();
-    aiming_ = -1;
-    Edits now = edits();
-    if (!history_.redo(now)) {
-        say("nothing to redo");
-        return false;
-    }
-    restore(std::move(now));
-    say("redone (" + std::to_string(history_.redoable()) + " more to redo)");
+    say(back ? "undone (" + std::to_string(history_.undoable()) + " more to undo, Ctrl+Y redoes)"
+             : "redone (" + std::to_string(history_.redoable()) + " more to redo)");
     return true;
 }
 

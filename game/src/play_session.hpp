@@ -154,6 +154,7 @@ private:
     /// Before an edit: the edits as they stand, with a lifted item back where it was.
     void recordEdit();
     void restore(Edits edits);
+    bool travel(bool back); // undo (back) or redo
 
     SceneDesc level_;
     std::string levelPath_;

@@ -2,6 +2,7 @@
 // input through the handlers GLFW's callbacks call (PlaySession's InputListener), recorded as a
 // script, replayed off-screen by the `rube` binary, and the window's level area at a step is
 // compared with the off-screen frame of the same step, with the screenshot tests' thresholds.
+#include "edit_session.hpp"
 #include "play_session.hpp"
 #include "play_visit.hpp"
 #include "scene_file.hpp"
@@ -346,4 +347,115 @@ TEST_CASE(
     visit.tick(0.0);
     CHECK(visit.finished());
     CHECK(ended.size() == 2);
+}
+
+TEST_CASE("a level built in the editor by synthetic input is saved and checked and replays to its goal",
+          "[window][edit]") {
+    std::filesystem::create_directories(kWork);
+    const std::filesystem::path file = kWork / "made.toml";
+    std::filesystem::remove(file);
+    EditSession editor(EditSession::newLevel("made"), file, {640, 360});
+    TestWindow window(editor.windowSize());
+    const auto show = [&] { return window.show(editor, editor.windowCamera()); };
+    const auto at = [&](Vec2 world) {
+        const render::Point p = editor.pixelOf(world);
+        editor.cursorMoved(p.x, p.y);
+    };
+    const auto press = [&](Key key) {
+        editor.key(key, KeyAction::press);
+        editor.key(key, KeyAction::release);
+    };
+    const auto control = [&](Key key) {
+        editor.key(Key::control, KeyAction::press);
+        press(key);
+        editor.key(Key::control, KeyAction::release);
+    };
+    const auto click = [&](Vec2 world) {
+        at(world);
+        editor.mouseButton(MouseButton::left, true);
+        editor.mouseButton(MouseButton::left, false);
+    };
+    const auto choose = [&](const char* kind) {
+        for (std::size_t i = 0; i < allPartKinds().size() && editor.selectedKind() != partKind(kind); ++i)
+            press(Key::tab);
+        REQUIRE(editor.selectedKind() == partKind(kind));
+    };
+
+    // A target in mid-air, a heavy ball over it marked as the player's, a zone around the ball.
+    choose("target");
+    click({0.0, 1.5});
+    choose("heavy");
+    click({0.2, 4.0});
+    // Moved by a drag: 5 cm snapping.
+    at({0.2, 4.0});
+    editor.mouseButton(MouseButton::left, true);
+    at({0.01, 4.02});
+    editor.mouseButton(MouseButton::left, false);
+    REQUIRE(editor.level().level.items.size() == 2);
+    CHECK(editor.level().level.items[1].position.x == 0.0);
+    CHECK(editor.level().level.items[1].position.y == 4.0);
+    at({0.0, 4.0});
+    press(Key::p);
+    REQUIRE(editor.playerParts().size() == 1);
+    CHECK(editor.level().level.items.size() == 1);
+    press(Key::z);
+    at({-1.0, 3.0});
+    editor.mouseButton(MouseButton::left, true);
+    at({1.0, 5.0});
+    show();
+    editor.mouseButton(MouseButton::left, false);
+    press(Key::z);
+    REQUIRE(editor.level().level.zones.size() == 1);
+    at({0.0, 1.5});
+    press(Key::t);
+    REQUIRE(editor.level().level.goal);
+    CHECK(editor.level().level.goal->item == "target1");
+    CHECK(editor.level().level.goal->timeLimit == 10.0);
+    render::writePng(kWork / "editor.png", show());
+
+    // Undo and redo: the goal goes and comes back; the zone too.
+    control(Key::z);
+    CHECK_FALSE(editor.level().level.goal);
+    control(Key::z);
+    CHECK(editor.level().level.zones.empty());
+    control(Key::y);
+    control(Key::y);
+    CHECK(editor.level().level.goal);
+    CHECK(editor.level().level.zones.size() == 1);
+    for (int i = 0; i < 4; ++i) press(Key::down);
+    CHECK(editor.level().level.goal->timeLimit == 6.0);
+
+    // Tried: the ball falls onto the target; R comes back to editing, nothing lost.
+    press(Key::space);
+    REQUIRE(editor.trying());
+    while (!editor.trying()->run()->goalFrame() && editor.trying()->run()->frame() < 1000) {
+        editor.trying()->step();
+        if (editor.trying()->run()->frame() % 25 == 0) show();
+    }
+    REQUIRE(editor.trying()->run()->goalFrame());
+    const std::int64_t goalStep = *editor.trying()->run()->goalFrame();
+    press(Key::r);
+    CHECK_FALSE(editor.trying());
+    CHECK(editor.playerParts().size() == 1);
+
+    // Saved: `rube check --strict` passes the level and its solution, which replays to that step.
+    control(Key::s);
+    INFO(editor.message());
+    REQUIRE_THAT(editor.message(), Catch::StartsWith("saved made.toml and made.solution.toml"));
+    const std::filesystem::path solution = kWork / "made.solution.toml";
+    const std::string check = std::string("\"") + RUBE_BINARY + "\" check --strict \"" + file.string() + "\" \"" +
+                              solution.string() + "\" > \"" + (kWork / "made.check.txt").string() + "\" 2>&1";
+    INFO(check);
+    CHECK(std::system(check.c_str()) == 0);
+    const std::string replay = std::string("\"") + RUBE_BINARY + "\" run \"" + file.string() + "\" --script \"" +
+                               solution.string() + "\" --no-render > \"" + (kWork / "made.run.txt").string() +
+                               "\" 2>&1";
+    INFO(replay);
+    REQUIRE(std::system(replay.c_str()) == 0);
+    std::ifstream printed(kWork / "made.run.txt");
+    const std::string text((std::istreambuf_iterator<char>(printed)), std::istreambuf_iterator<char>());
+    CHECK_THAT(text, Catch::Contains("goal:             reached at frame " + std::to_string(goalStep)));
+    std::ifstream saved(file);
+    const std::string level((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+    CHECK_THAT(level, Catch::Contains("time_limit = 6\n")); // set with Down
 }

@@ -1,6 +1,7 @@
 // The `rube` command: one class per subcommand sets up its options and runs it; main() only
 // parses the command line and hands over to the subcommand chosen.
 #include "check_command.hpp"
+#include "edit_window.hpp"
 #include "exit_codes.hpp"
 #include "items_command.hpp"
 #include "play_window.hpp"
@@ -352,6 +353,47 @@ ExitCode PlayCommand::run() {
     return rube::game::playInWindow(options_, std::cout, std::cerr);
 }
 
+// `rube edit [LEVEL]`: the editor's options.
+class EditCommand : Command {
+public:
+    explicit EditCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run();
+
+private:
+    CLI::App* command_ = nullptr;
+    rube::game::EditOptions options_;
+    std::string size_ = "1280x720";
+    CLI::Option* sizeOption_ = nullptr;
+};
+
+EditCommand::EditCommand(CLI::App& app) {
+    command_ = app.add_subcommand("edit", "Make a level (or change LEVEL) in a window, and save it with its solution");
+    command_->footer(
+        "A click places the kind shown on the bar (Tab picks the next; every kind, without limit) or picks\n"
+        "  up a part to move it; [ ] or the wheel turns it by 15 degrees; right-click or Delete removes a\n"
+        "  part or a zone. Z switches to zones: a drag draws a placement zone. P marks the part under\n"
+        "  the cursor as the player's: it is saved as a placement of NAME.solution.toml and counted into\n"
+        "  the inventory (P again makes it fixed). T makes the target or bucket under the cursor the\n"
+        "  goal (10 s; Up and Down change its time limit by 1 s). Space tries the level as 'rube play' would, R or Esc "
+        "comes back. Ctrl+Z and\n"
+        "  Ctrl+Y undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the\n"
+        "  goal's step as the solution's expectation. Esc quits (without saving).\n"
+        "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
+    command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
+        ->type_name("LEVEL");
+    command_->add_option("--out", options_.out, "Save to FILE (default: LEVEL, else new-level.toml)")
+        ->type_name("FILE");
+    sizeOption_ = command_->add_option("--size", size_, "Level area in pixels (default 1280x720)")
+                      ->type_name("WxH")
+                      ->check(CLI::Validator(frameSizeError, ""));
+}
+
+ExitCode EditCommand::run() {
+    if (*sizeOption_) options_.size = *parseFrameSize(size_); // the validator has accepted it
+    return rube::game::editInWindow(options_, std::cout, std::cerr);
+}
+
 // `rube check FILE...`: the files, the level scripts are checked against, and --strict.
 class CheckCommand : Command {
 public:
@@ -428,7 +470,7 @@ std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
         const auto commands = std::as_const(app).get_subcommands([](const CLI::App*) { return true; });
         if (std::none_of(commands.begin(), commands.end(), [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
             std::cerr << "rube: unknown command '" << argv[1]
-                      << "': the commands are run, play, check and items (see 'rube --help')\n";
+                      << "': the commands are run, play, edit, check and items (see 'rube --help')\n";
             return ExitCode::badInput;
         }
     }
@@ -462,11 +504,13 @@ int main(int argc, char** argv) {
     RunCommand run(app);
     CheckCommand check(app);
     PlayCommand play(app);
+    EditCommand edit(app);
     ItemsCommand items(app);
 
     if (const std::optional<ExitCode> done = parseCommandLine(app, argc, argv)) return rube::game::exitStatus(*done);
     if (run.chosen()) return rube::game::exitStatus(run.run());
     if (play.chosen()) return rube::game::exitStatus(play.run());
+    if (edit.chosen()) return rube::game::exitStatus(edit.run());
     if (items.chosen()) return rube::game::exitStatus(items.run());
     return rube::game::exitStatus(check.run());
 }

@@ -25,11 +25,6 @@ constexpr double kSlowMotion = 0.1;  // S: the fraction of real time the machine
 // The levels' items a click uses while running.
 bool usable(ItemKind kind) { return kind->clickAction().has_value(); }
 
-render::Camera levelCamera(const SceneDesc& level, render::FrameSize frame) {
-    const LevelRun start(level, {});
-    return sceneCamera(frameScene(level, start.world()), frame);
-}
-
 std::vector<ItemKind> stockOf(const SceneDesc& level) {
     std::vector<ItemKind> kinds;
     for (ItemKind kind : allPartKinds())
@@ -39,10 +34,16 @@ std::vector<ItemKind> stockOf(const SceneDesc& level) {
 
 } // namespace
 
+render::Camera play::levelCamera(const SceneDesc& level, render::FrameSize frame) {
+    const LevelRun start(level, {});
+    return sceneCamera(frameScene(level, start.world()), frame);
+}
+
 PlaySession::PlaySession(SceneDesc level, std::string levelPath, render::FrameSize levelFrame)
     : level_(std::move(level)), levelPath_(std::move(levelPath)),
-      bar_(levelCamera(level_, levelFrame), levelFrame, stockOf(level_)),
-      view_(level_.name, levelCamera(level_, levelFrame), levelFrame), messageColor_(Palette::greybox()["hud_text"]) {
+      bar_(play::levelCamera(level_, levelFrame), levelFrame, stockOf(level_)),
+      view_(level_.name, play::levelCamera(level_, levelFrame), levelFrame),
+      messageColor_(Palette::greybox()["hud_text"]) {
     rebuildPreview();
     say(level_.description.empty() ? "place items from the bar, then press Space" : level_.description);
 }

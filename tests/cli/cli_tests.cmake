@@ -95,7 +95,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, check and items (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, edit, check and items (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -226,6 +226,19 @@ rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit
 # line naming it, before any window is asked for; a --script needs its level.
 rube_play_test("no level and an index that is not there" "--index|${RUBE_CLI_OUT}/no-index.toml" 2
                "-DSTDERR_LINE=${RUBE_CLI_OUT}/no-index.toml: cannot open file (no LEVEL given, so 'rube play' lists the levels of ${RUBE_CLI_OUT}/no-index.toml: give a LEVEL or --index FILE)")
+# `rube edit` (issue 23): the same checks before any window, then no display is exit 1.
+function(rube_edit_test name args exit)
+  add_test(NAME "cli: edit ${name}"
+           COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
+                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=edit|${args}" -DEXIT=${exit} ${ARGN}
+                   -P ${RUBE_CLI_DIR}/rube_cli.cmake)
+endfunction()
+rube_edit_test("without a display says so" "--out|${RUBE_CLI_OUT}/new.toml" 1
+               "-DSTDERR_LINE=rube edit: no display (DISPLAY is not set): give it a virtual display with 'xvfb-run rube edit'")
+rube_edit_test("--out not a .toml" "--out|${RUBE_CLI_OUT}/new.txt" 2
+               "-DSTDERR_LINE=rube edit: --out ${RUBE_CLI_OUT}/new.txt: a level file ends in .toml")
+rube_edit_test("a bad level is reported at its place" "${RUBE_CLI_DIR}/bad-mass.toml" 2
+               -DSTDERR_FIXTURE=${RUBE_CLI_DIR}/bad-mass.toml)
 rube_play_test("a --script without a level" "--script|${RUBE_GAME_LEVELS}/ramp.solution.toml" 2
                "-DSTDERR_LINE=rube play: --script needs a LEVEL: the script belongs to one level")
 

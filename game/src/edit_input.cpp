@@ -1,0 +1,228 @@
+// The editor's input: a click places the selected kind (Tab picks it) or picks up a part to move;
+// Z draws zones; [ ] and the wheel turn; right-click or Delete removes; P marks a part as the
+// player's; T makes the goal; Ctrl+Z, Ctrl+Y, Ctrl+S; Space tries the level, R or Esc comes back.
+#include "edit_session.hpp"
+
+#include "play_internal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rube::game {
+
+namespace {
+
+using play::normalDegrees;
+using play::snap;
+using render::Key;
+using render::KeyAction;
+using render::MouseButton;
+
+constexpr double kGridPerMetre = 20.0; // 5 cm, as the play window's grid
+constexpr double kTurnStep = 15.0;     // degrees
+constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
+
+Vec2 snapped(Vec2 v) { return {snap(v.x, kGridPerMetre), snap(v.y, kGridPerMetre)}; }
+
+} // namespace
+
+void EditSession::cursorMoved(float x, float y) {
+    if (trying_) return trying_->cursorMoved(x, y);
+    cursor_ = {x, y};
+    cursorWorld_ = bar_.toWorld(cursor_);
+    if (dragging_) moveDragged();
+}
+
+void EditSession::moveDragged() {
+    const Vec2 to = snapped(cursorWorld_ + dragOffset_);
+    if (dragging_->what == Hit::What::item) state_.level.level.items[dragging_->index].position = to;
+    else state_.players[dragging_->index].position = to;
+}
+
+void EditSession::mouseButton(MouseButton button, bool pressed) {
+    if (trying_) return trying_->mouseButton(button, pressed);
+    if (button == MouseButton::right && pressed) return removeAtCursor();
+    if (button != MouseButton::left) return;
+    if (!pressed) {
+        if (zoneStart_) {
+            const Vec2 end = snapped(cursorWorld_);
+            const Aabb box{{std::min(zoneStart_->x, end.x), std::min(zoneStart_->y, end.y)},
+                           {std::max(zoneStart_->x, end.x), std::max(zoneStart_->y, end.y)}};
+            zoneStart_.reset();
+            if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
+                edit();
+                state_.level.level.zones.push_back({box, {}});
+                say("zone " + formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y));
+            }
+        }
+        dragging_.reset();
+        return;
+    }
+    if (bar_.contains(cursor_)) return;
+    if (zoneMode_) {
+        zoneStart_ = snapped(cursorWorld_);
+        return;
+    }
+    const Hit hit = hitAtCursor();
+    edit();
+    if (hit.what == Hit::What::item || hit.what == Hit::What::player) {
+        const Vec2 at = hit.what == Hit::What::item ? state_.level.level.items[hit.index].position
+                                                    : state_.players[hit.index].position;
+        dragging_ = hit;
+        dragOffset_ = at - cursorWorld_;
+        return;
+    }
+    ItemDesc item = defaultItem(selectedKind(), snapped(cursorWorld_));
+    item.name = nameFor(selectedKind());
+    state_.level.level.items.push_back(item);
+    dragging_ = Hit{Hit::What::item, state_.level.level.items.size() - 1};
+    dragOffset_ = {};
+    say("placed " + item.name + " at " + formatPair(item.position.x, item.position.y) +
+        " (P: the player's, T: the goal)");
+}
+
+void EditSession::scrolled(float notches) {
+    if (trying_) return trying_->scrolled(notches);
+    if (const int clicks = static_cast<int>(std::lround(notches)); clicks != 0) turnAtCursor(clicks * kTurnStep);
+}
+
+void EditSession::turnAtCursor(double degrees) {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item && hit.what != Hit::What::player) return;
+    edit();
+    if (hit.what == Hit::What::player) {
+        Placement& p = state_.players[hit.index];
+        p.angleDegrees = normalDegrees(p.angleDegrees + degrees);
+        p.angle = scriptRadians(p.angleDegrees);
+        return say(std::string(p.kind->name()) + " turned to " + play::number(p.angleDegrees) + " degrees");
+    }
+    ItemDesc& item = state_.level.level.items[hit.index];
+    const double now = item.angleDegrees.value_or(item.angle * 180.0 / std::numbers::pi);
+    item.angleDegrees = normalDegrees(play::snap(now, 2.0) + degrees);
+    item.angle = *item.angleDegrees * std::numbers::pi / 180.0; // as the level reader converts
+    say(item.name + " turned to " + play::number(*item.angleDegrees) + " degrees");
+}
+
+void EditSession::removeAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what == Hit::What::none) return;
+    edit();
+    LevelDesc& level = state_.level.level;
+    if (hit.what == Hit::What::player) {
+        state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    } else if (hit.what == Hit::What::zone) {
+        level.zones.erase(level.zones.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    } else {
+        if (level.goal && level.goal->item == level.items[hit.index].name) level.goal.reset();
+        level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    }
+    say("removed");
+}
+
+void EditSession::markAtCursor() {
+    const Hit hit = hitAtCursor();
+    LevelDesc& level = state_.level.level;
+    if (hit.what == Hit::What::player) {
+        edit();
+        const Placement p = state_.players[hit.index];
+        state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
+        ItemDesc item = placedItem(p);
+        item.name = nameFor(p.kind);
+        item.angleDegrees = p.angleDegrees;
+        level.items.push_back(item);
+        return say(item.name + " is a fixed part again");
+    }
+    if (hit.what != Hit::What::item) return;
+    const ItemDesc& item = level.items[hit.index];
+    if (!item.kind->placeable())
+        return say("a " + std::string(item.kind->name()) + " cannot be placed by the player", "magnet");
+    edit();
+    Placement p;
+    p.kind = item.kind;
+    p.position = item.position;
+    p.angleDegrees = item.angleDegrees.value_or(0.0);
+    p.angle = scriptRadians(p.angleDegrees);
+    p.name = item.name;
+    state_.players.push_back(p);
+    if (level.goal && level.goal->item == item.name) level.goal.reset();
+    level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
+}
+
+void EditSession::goalAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
+    const ItemDesc& item = state_.level.level.items[hit.index];
+    Goal goal;
+    goal.timeLimit = state_.level.level.goal ? state_.level.level.goal->timeLimit : std::optional<double>(10.0);
+    goal.item = item.name;
+    if (item.kind->plays(PartRole::goalTarget)) {
+        goal.kind = GoalKind::targetHit;
+        goal.text = "hit the " + item.name;
+    } else if (item.kind->plays(PartRole::goalBucket)) {
+        goal.kind = GoalKind::ballInBucket;
+        goal.text = "get a ball into the " + item.name;
+    } else {
+        return say("T: a " + std::string(item.kind->name()) + " cannot be a goal", "magnet");
+    }
+    edit();
+    state_.level.level.goal = goal;
+    say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+}
+
+void EditSession::key(Key key, KeyAction action) {
+    if (key == Key::control) control_ = action != KeyAction::release;
+    if (trying_) {
+        if ((key == Key::r || key == Key::escape) && action == KeyAction::press) {
+            trying_.reset();
+            return say("back to editing");
+        }
+        return trying_->key(key, action);
+    }
+    if (action == KeyAction::release) return;
+    if (key == Key::leftBracket || key == Key::rightBracket)
+        return turnAtCursor(key == Key::leftBracket ? kTurnStep : -kTurnStep);
+    if (action == KeyAction::repeat) return;
+    switch (key) {
+    case Key::tab:
+        selected_ = (selected_ + 1) % allPartKinds().size();
+        say("click to place a " + std::string(selectedKind()->name()) + "; Tab picks another kind");
+        break;
+    case Key::z:
+        if (control_ && history_.undo(state_)) say("undone");
+        else if (!control_) {
+            zoneMode_ = !zoneMode_;
+            say(zoneMode_ ? "zones: drag to draw a placement zone, Z again to place parts" : "placing parts");
+        }
+        break;
+    case Key::y:
+        if (control_ && history_.redo(state_)) say("redone");
+        break;
+    case Key::s:
+        if (control_) save();
+        break;
+    case Key::up:
+    case Key::down:
+        if (!state_.level.level.goal) {
+            say("T sets a goal first; then Up and Down set its time limit", "magnet");
+            break;
+        }
+        edit();
+        {
+            Goal& goal = *state_.level.level.goal;
+            goal.timeLimit = std::max(1.0, std::round(goal.timeLimit.value_or(10.0)) + (key == Key::up ? 1.0 : -1.0));
+            say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+        }
+        break;
+    case Key::p: markAtCursor(); break;
+    case Key::t: goalAtCursor(); break;
+    case Key::deleteKey:
+    case Key::backspace: removeAtCursor(); break;
+    case Key::space: tryIt(); break;
+    case Key::escape: quit_ = true; break;
+    default: break;
+    }
+}
+
+} // namespace rube::game

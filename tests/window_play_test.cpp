@@ -404,6 +404,26 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     at({1.0, 5.0});
     show();
     editor.mouseButton(MouseButton::left, false);
+    REQUIRE(editor.level().level.zones.size() == 1);
+    // A drag from a corner resizes the zone; past the opposite corner it flips, min below max.
+    at({1.0, 5.0});
+    editor.mouseButton(MouseButton::left, true);
+    at({1.5, 5.5});
+    editor.mouseButton(MouseButton::left, false);
+    CHECK(editor.level().level.zones[0].box.max.x == 1.5);
+    CHECK(editor.level().level.zones[0].box.max.y == 5.5);
+    at({1.5, 3.0});
+    editor.mouseButton(MouseButton::left, true);
+    at({-1.5, 2.5});
+    editor.mouseButton(MouseButton::left, false);
+    CHECK(editor.level().level.zones[0].box.min.x == -1.5);
+    CHECK(editor.level().level.zones[0].box.max.x == -1.0);
+    CHECK(editor.level().level.zones[0].box.min.y == 2.5);
+    control(Key::z);
+    control(Key::z);
+    CHECK(editor.level().level.zones[0].box.min.x == -1.0);
+    CHECK(editor.level().level.zones[0].box.max.x == 1.0);
+    CHECK(editor.level().level.zones[0].box.max.y == 5.0);
     press(Key::z);
     REQUIRE(editor.level().level.zones.size() == 1);
     at({0.0, 1.5});
@@ -438,6 +458,18 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     CHECK_FALSE(editor.trying());
     CHECK(editor.playerParts().size() == 1);
 
+    // Spares: the inventory gives two planks beyond the player's ball.
+    choose("plank");
+    press(Key::i);
+    press(Key::i);
+    press(Key::i);
+    press(Key::k);
+    CHECK(editor.inventory().at("plank") == 2);
+    CHECK(editor.inventory().at("heavy") == 1);
+    choose("target");
+    press(Key::i);
+    CHECK_THAT(editor.message(), Catch::Contains("cannot be in the inventory"));
+
     // Saved: `rube check --strict` passes the level and its solution, which replays to that step.
     control(Key::s);
     INFO(editor.message());
@@ -456,6 +488,17 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     const std::string text((std::istreambuf_iterator<char>(printed)), std::istreambuf_iterator<char>());
     CHECK_THAT(text, Catch::Contains("goal:             reached at frame " + std::to_string(goalStep)));
     std::ifstream saved(file);
-    const std::string level((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
-    CHECK_THAT(level, Catch::Contains("time_limit = 6\n")); // set with Down
+    const std::string written((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+    CHECK_THAT(written, Catch::Contains("time_limit = 6\n")); // set with Down
+    CHECK_THAT(written, Catch::Contains("heavy = 1\nplank = 2\n"));
+
+    // A shipped level opened with its solution keeps its inventory, spares and all.
+    for (const char* name : {"ramp", "chain-reaction", "pegs"}) {
+        const SceneDesc shipped = level(name);
+        const ScriptLoad solution = loadScriptFile(kLevels / (std::string(name) + ".solution.toml"), shipped);
+        REQUIRE(solution.script);
+        const EditSession opened(shipped, kWork / "opened.toml", {640, 360}, solution.script->placements);
+        CHECK(opened.inventory() == shipped.level.inventory);
+        CHECK(opened.playerParts().size() == solution.script->placements.size());
+    }
 }

@@ -32,6 +32,48 @@ void EditSession::cursorMoved(float x, float y) {
     cursor_ = {x, y};
     cursorWorld_ = bar_.toWorld(cursor_);
     if (dragging_) moveDragged();
+    if (resizing_) {
+        // The corner follows the cursor; the opposite corner stays, and the box keeps min below max.
+        Aabb& box = state_.level.level.zones[resizing_->first].box;
+        const Vec2 to = snapped(cursorWorld_);
+        const int corner = resizing_->second;
+        (corner & 1 ? box.max.x : box.min.x) = to.x;
+        (corner & 2 ? box.max.y : box.min.y) = to.y;
+        if (box.min.x > box.max.x) {
+            std::swap(box.min.x, box.max.x);
+            resizing_->second ^= 1;
+        }
+        if (box.min.y > box.max.y) {
+            std::swap(box.min.y, box.max.y);
+            resizing_->second ^= 2;
+        }
+    }
+}
+
+std::optional<std::pair<std::size_t, int>> EditSession::zoneCornerAtCursor() const {
+    const float ppm = bar_.windowCamera().pixelsPerMetre(bar_.windowSize());
+    const double reach = 8.0 / ppm;
+    const std::vector<Zone>& zones = state_.level.level.zones;
+    for (std::size_t z = zones.size(); z-- > 0;)
+        for (int corner = 0; corner < 4; ++corner) {
+            const Vec2 at{corner & 1 ? zones[z].box.max.x : zones[z].box.min.x,
+                          corner & 2 ? zones[z].box.max.y : zones[z].box.min.y};
+            if (cursorWorld_.distance(at) <= reach) return std::pair{z, corner};
+        }
+    return std::nullopt;
+}
+
+void EditSession::changeSpare(int by) {
+    const std::string kind(selectedKind()->name());
+    if (!selectedKind()->placeable()) return say("a " + kind + " cannot be in the inventory", "magnet");
+    const int now = state_.spare.count(kind) ? state_.spare.at(kind) : 0;
+    if (now + by < 0) return say("no spare " + kind + " to take away", "magnet");
+    edit();
+    if (now + by == 0) state_.spare.erase(kind);
+    else state_.spare[kind] = now + by;
+    const auto stock = inventory();
+    say("inventory: " + kind + " x" + std::to_string(stock.count(kind) ? stock.at(kind) : 0) + " (" +
+        std::to_string(now + by) + " spare beyond the player's parts)");
 }
 
 void EditSession::moveDragged() {
@@ -57,11 +99,14 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
             }
         }
         dragging_.reset();
+        resizing_.reset();
         return;
     }
     if (bar_.contains(cursor_)) return;
     if (zoneMode_) {
-        zoneStart_ = snapped(cursorWorld_);
+        // On a zone's corner, a drag resizes the zone; elsewhere it draws a new one.
+        if ((resizing_ = zoneCornerAtCursor())) edit();
+        else zoneStart_ = snapped(cursorWorld_);
         return;
     }
     const Hit hit = hitAtCursor();
@@ -215,6 +260,8 @@ void EditSession::key(Key key, KeyAction action) {
             say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
         }
         break;
+    case Key::i: changeSpare(1); break;
+    case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;
     case Key::t: goalAtCursor(); break;
     case Key::deleteKey:

@@ -34,10 +34,14 @@ max = [8, 8]
 
 EditSession::EditSession(SceneDesc level, std::filesystem::path file, render::FrameSize levelFrame,
                          const std::vector<Placement>& solution)
-    : state_{std::move(level), solution}, file_(std::move(file)),
+    : state_{std::move(level), solution, {}}, file_(std::move(file)),
       bar_(play::levelCamera(state_.level, levelFrame), levelFrame, {}),
       view_(state_.level.name, play::levelCamera(state_.level, levelFrame), levelFrame),
       messageColor_(render::Palette::greybox()["hud_text"]) {
+    // What the inventory gives beyond the solution's parts stays spare.
+    state_.spare = state_.level.level.inventory;
+    for (const Placement& p : solution) --state_.spare[std::string(p.kind->name())];
+    std::erase_if(state_.spare, [](const auto& kindCount) { return kindCount.second <= 0; });
     say("click to place a " + std::string(selectedKind()->name()) + "; Tab picks another kind");
 }
 
@@ -60,7 +64,7 @@ std::string EditSession::nameFor(ItemKind kind) const {
 // The level as saved: the fixed parts, and an inventory of the player's parts.
 SceneDesc EditSession::savedLevel() const {
     SceneDesc level = state_.level;
-    level.level.inventory.clear();
+    level.level.inventory = state_.spare;
     for (const Placement& p : state_.players) ++level.level.inventory[std::string(p.kind->name())];
     return level;
 }

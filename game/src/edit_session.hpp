@@ -1,7 +1,8 @@
 #pragma once
 /// EditSession: `rube edit`, a level made or changed in a window. Every part kind can be placed,
 /// without limit, moved, turned and deleted; placement zones are drawn; a part marked as the
-/// player's (P) is saved as a placement of the solution script and counted into the inventory;
+/// player's (P) is saved as a placement of the solution script and counted into the inventory,
+/// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
@@ -13,6 +14,7 @@
 #include "play_session.hpp"
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +53,8 @@ public:
     const SceneDesc& level() const { return state_.level; }
     /// The parts marked as the player's, as placements.
     const std::vector<Placement>& playerParts() const { return state_.players; }
+    /// The inventory the level is saved with: the player's parts and the spares (I adds, K takes).
+    std::map<std::string, int, std::less<>> inventory() const { return savedLevel().level.inventory; }
     /// The level being tried (Space), or nullptr while editing.
     const PlaySession* trying() const { return trying_.get(); }
     PlaySession* trying() { return trying_.get(); }
@@ -62,6 +66,7 @@ private:
     struct State {
         SceneDesc level;
         std::vector<Placement> players;
+        std::map<std::string, int, std::less<>> spare; // inventory beyond the player's parts (I, K)
     };
     /// What the cursor is on: a fixed item, a player's part or a zone (index), or nothing.
     struct Hit {
@@ -80,6 +85,8 @@ private:
     void markAtCursor();
     void goalAtCursor();
     void tryIt();
+    void changeSpare(int by);
+    std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
 
     State state_;
     std::filesystem::path file_;
@@ -93,6 +100,7 @@ private:
     Vec2 dragOffset_;             // from the cursor to the dragged part's position
     bool zoneMode_ = false;       // Z: a drag draws a zone
     std::optional<Vec2> zoneStart_;
+    std::optional<std::pair<std::size_t, int>> resizing_; // a zone and its corner (0-3) being dragged
     bool control_ = false;
     bool quit_ = false;
     std::string message_;

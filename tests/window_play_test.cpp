@@ -458,6 +458,27 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     CHECK_FALSE(editor.trying());
     CHECK(editor.playerParts().size() == 1);
 
+    // V fits the view to the parts and zones, a metre around them; undone, the view is back.
+    const Aabb before = *editor.level().view;
+    press(Key::v);
+    REQUIRE(editor.level().view);
+    const Aabb fitted = *editor.level().view;
+    CHECK(fitted.min.x == -2.0);
+    CHECK(fitted.max.x == 2.0);
+    CHECK(fitted.max.y == 6.0);
+    // The camera follows: the view's top left corner is on the window's left or top edge.
+    const auto onEdge = [&](const Aabb& view) {
+        const render::Point corner = editor.pixelOf({view.min.x, view.max.y});
+        return std::min(std::abs(corner.x), std::abs(corner.y)) <= 1.0f;
+    };
+    CHECK(onEdge(fitted));
+    CHECK_FALSE(onEdge(before));
+    control(Key::z);
+    CHECK(editor.level().view->max.x == before.max.x);
+    CHECK(onEdge(before));
+    control(Key::y);
+    CHECK(editor.level().view->max.x == fitted.max.x);
+
     // Spares: the inventory gives two planks beyond the player's ball.
     choose("plank");
     press(Key::i);

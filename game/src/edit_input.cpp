@@ -235,14 +235,19 @@ void EditSession::key(Key key, KeyAction action) {
         say("click to place a " + std::string(selectedKind()->name()) + "; Tab picks another kind");
         break;
     case Key::z:
-        if (control_ && history_.undo(state_)) say("undone");
-        else if (!control_) {
+        if (control_ && history_.undo(state_)) {
+            refreshCamera();
+            say("undone");
+        } else if (!control_) {
             zoneMode_ = !zoneMode_;
             say(zoneMode_ ? "zones: drag to draw a placement zone, Z again to place parts" : "placing parts");
         }
         break;
     case Key::y:
-        if (control_ && history_.redo(state_)) say("redone");
+        if (control_ && history_.redo(state_)) {
+            refreshCamera();
+            say("redone");
+        }
         break;
     case Key::s:
         if (control_) save();
@@ -260,6 +265,7 @@ void EditSession::key(Key key, KeyAction action) {
             say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
         }
         break;
+    case Key::v: fitView(); break;
     case Key::i: changeSpare(1); break;
     case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;

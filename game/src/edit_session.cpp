@@ -52,6 +52,34 @@ void EditSession::say(std::string text, const char* colour) {
 
 void EditSession::edit() { history_.record(state_); }
 
+// The camera follows the level's [view]: after V, and after an undo or redo that changed it.
+void EditSession::refreshCamera() {
+    const render::Camera camera = play::levelCamera(state_.level, bar_.levelFrame());
+    bar_ = InventoryBar(camera, bar_.levelFrame(), {});
+    view_ = LevelView(state_.level.name, camera, bar_.levelFrame());
+}
+
+// V: the view becomes the box around every part and zone, with a metre's margin.
+void EditSession::fitView() {
+    std::optional<Aabb> box;
+    const auto add = [&](const Aabb& b) {
+        box = box ? Aabb{{std::min(box->min.x, b.min.x), std::min(box->min.y, b.min.y)},
+                         {std::max(box->max.x, b.max.x), std::max(box->max.y, b.max.y)}}
+                  : b;
+    };
+    for (const ItemDesc& item : state_.level.level.items) add(itemExtent(item));
+    for (const Placement& p : state_.players) add(itemExtent(placedItem(p)));
+    for (const Zone& zone : state_.level.level.zones) add(zone.box);
+    if (!box) return say("V: nothing to fit the view to", "magnet");
+    edit();
+    const double margin = 1.0;
+    state_.level.view = Aabb{{std::floor(box->min.x - margin), std::floor(box->min.y - margin)},
+                             {std::ceil(box->max.x + margin), std::ceil(box->max.y + margin)}};
+    refreshCamera();
+    say("view " + formatPair(state_.level.view->min.x, state_.level.view->min.y) + " to " +
+        formatPair(state_.level.view->max.x, state_.level.view->max.y));
+}
+
 std::string EditSession::nameFor(ItemKind kind) const {
     const auto taken = [&](const std::string& name) {
         return state_.level.level.find(name) >= 0 || std::any_of(state_.players.begin(), state_.players.end(),

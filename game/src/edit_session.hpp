@@ -3,7 +3,8 @@
 /// without limit, moved, turned and deleted; placement zones are drawn; a part marked as the
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
-/// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; Space tries the level in a
+/// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
+/// the view to the parts; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
@@ -86,6 +87,8 @@ private:
     void goalAtCursor();
     void tryIt();
     void changeSpare(int by);
+    void fitView();
+    void refreshCamera();
     std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
 
     State state_;

@@ -369,19 +369,17 @@ private:
 
 EditCommand::EditCommand(CLI::App& app) {
     command_ = app.add_subcommand("edit", "Make a level (or change LEVEL) in a window, and save it with its solution");
-    command_->footer(
-        "A click places the kind shown on the bar (Tab picks the next; every kind, without limit) or picks\n"
-        "  up a part to move it; [ ] or the wheel turns it by 15 degrees; right-click or Delete removes a\n"
-        "  part or a zone. Z switches to zones: a drag draws a placement zone, a drag from a zone's corner\n"
-        "  resizes it. P marks the part under the cursor as the player's: it is saved as a placement of\n"
-        "  NAME.solution.toml and counted into the inventory (P again makes it fixed); I and K add and\n"
-        "  take a spare of the kind shown to and from the inventory. T makes the target or bucket under the cursor "
-        "the\n"
-        "  goal (10 s; Up and Down change its time limit by 1 s). Space tries the level as 'rube play' would, R or Esc "
-        "comes back. Ctrl+Z and\n"
-        "  Ctrl+Y undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the\n"
-        "  goal's step as the solution's expectation. Esc quits (without saving).\n"
-        "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
+    command_->footer("A click places the kind shown on the bar (Tab picks the next; every kind, without limit) or\n"
+                     "  picks up a part to move it; [ ] or the wheel turns it by 15 degrees; right-click or Delete\n"
+                     "  removes a part or a zone. Z switches to zones: a drag draws a placement zone, a drag from a\n"
+                     "  zone's corner resizes it. P marks the part under the cursor as the player's: it is saved as a\n"
+                     "  placement of NAME.solution.toml and counted into the inventory (P again makes it fixed); I\n"
+                     "  and K add and take a spare of the kind shown. T makes the target or bucket under the cursor\n"
+                     "  the goal (10 s; Up and Down change the time limit by 1 s). V fits the view to the parts and\n"
+                     "  zones. Space tries the level as 'rube play' would, R or Esc comes back. Ctrl+Z and Ctrl+Y\n"
+                     "  undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step\n"
+                     "  as the solution's expectation. Esc quits (without saving).\n"
+                     "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
     command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
         ->type_name("LEVEL");
     command_->add_option("--out", options_.out, "Save to FILE (default: LEVEL, else new-level.toml)")

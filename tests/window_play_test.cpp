@@ -479,6 +479,27 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     control(Key::y);
     CHECK(editor.level().view->max.x == fitted.max.x);
 
+    // H types a hint (the 'h' that H types is not part of it); Enter keeps it, Esc drops a draft.
+    press(Key::h);
+    for (const char c : std::string("hDrop it, [x]")) editor.typed(static_cast<char32_t>(c));
+    editor.typed(U'\u00e9'); // outside the HUD's font: not taken
+    press(Key::backspace);
+    press(Key::backspace);
+    press(Key::backspace);
+    for (const char c : std::string("on it.")) editor.typed(static_cast<char32_t>(c));
+    press(Key::p); // typed, not marking: a letter of the hint
+    editor.typed(U'!');
+    press(Key::enter);
+    REQUIRE(editor.level().level.hints.size() == 1);
+    CHECK(editor.level().level.hints[0].text == "Drop it, on it.!");
+    CHECK(editor.playerParts().size() == 1);
+    press(Key::h);
+    editor.typed(U'h');
+    editor.typed(U'x');
+    press(Key::escape);
+    CHECK(editor.level().level.hints.size() == 1);
+    CHECK_FALSE(editor.quitRequested());
+
     // Spares: the inventory gives two planks beyond the player's ball.
     choose("plank");
     press(Key::i);
@@ -512,6 +533,7 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     const std::string written((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
     CHECK_THAT(written, Catch::Contains("time_limit = 6\n")); // set with Down
     CHECK_THAT(written, Catch::Contains("heavy = 1\nplank = 2\n"));
+    CHECK_THAT(written, Catch::Contains("[[hint]]\ntext = 'Drop it, on it.!'\n"));
 
     // A shipped level opened with its solution keeps its inventory, spares and all.
     for (const char* name : {"ramp", "chain-reaction", "pegs"}) {

@@ -127,6 +127,18 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
         " (P: the player's, T: the goal)");
 }
 
+void EditSession::typed(char32_t codePoint) {
+    if (trying_ || !hintDraft_) return;
+    if (skipTyped_) {
+        skipTyped_ = false;
+        if (codePoint == U'h' || codePoint == U'H') return;
+    }
+    // The HUD's font draws printable ASCII only.
+    if (codePoint < 32 || codePoint > 126) return;
+    *hintDraft_ += static_cast<char>(codePoint);
+    say("hint: " + *hintDraft_ + "_");
+}
+
 void EditSession::scrolled(float notches) {
     if (trying_) return trying_->scrolled(notches);
     if (const int clicks = static_cast<int>(std::lround(notches)); clicks != 0) turnAtCursor(clicks * kTurnStep);
@@ -226,6 +238,24 @@ void EditSession::key(Key key, KeyAction action) {
         return trying_->key(key, action);
     }
     if (action == KeyAction::release) return;
+    if (hintDraft_) {
+        // Typing a hint: only these keys act; the rest type (typed()).
+        if (key == Key::enter && action == KeyAction::press) {
+            if (!hintDraft_->empty()) {
+                edit();
+                state_.level.level.hints.push_back({*hintDraft_, {}});
+                say("hint " + std::to_string(state_.level.level.hints.size()) + " kept: " + *hintDraft_);
+            }
+            hintDraft_.reset();
+        } else if (key == Key::escape && action == KeyAction::press) {
+            hintDraft_.reset();
+            say("no hint");
+        } else if (key == Key::backspace && !hintDraft_->empty()) {
+            hintDraft_->pop_back();
+            say("hint: " + *hintDraft_ + "_");
+        }
+        return;
+    }
     if (key == Key::leftBracket || key == Key::rightBracket)
         return turnAtCursor(key == Key::leftBracket ? kTurnStep : -kTurnStep);
     if (action == KeyAction::repeat) return;
@@ -266,6 +296,11 @@ void EditSession::key(Key key, KeyAction action) {
         }
         break;
     case Key::v: fitView(); break;
+    case Key::h:
+        hintDraft_ = std::string();
+        skipTyped_ = true;
+        say("hint: _  (type it; Enter keeps it, Esc drops it)");
+        break;
     case Key::i: changeSpare(1); break;
     case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;

@@ -4,7 +4,7 @@
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
-/// the view to the parts; Space tries the level in a
+/// the view to the parts; H types a hint; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
@@ -36,6 +36,7 @@ public:
     void mouseButton(render::MouseButton button, bool pressed) override;
     void scrolled(float notches) override;
     void key(render::Key key, render::KeyAction action) override;
+    void typed(char32_t codePoint) override;
 
     void draw(render::DrawList& list) const;
     render::FrameSize windowSize() const { return bar_.windowSize(); }
@@ -105,6 +106,8 @@ private:
     std::optional<Vec2> zoneStart_;
     std::optional<std::pair<std::size_t, int>> resizing_; // a zone and its corner (0-3) being dragged
     bool control_ = false;
+    std::optional<std::string> hintDraft_; // H: the hint being typed (Enter keeps it, Esc drops it)
+    bool skipTyped_ = false;               // the 'h' that H itself types
     bool quit_ = false;
     std::string message_;
     render::Color messageColor_;

@@ -376,7 +376,8 @@ EditCommand::EditCommand(CLI::App& app) {
                      "  placement of NAME.solution.toml and counted into the inventory (P again makes it fixed); I\n"
                      "  and K add and take a spare of the kind shown. T makes the target or bucket under the cursor\n"
                      "  the goal (10 s; Up and Down change the time limit by 1 s). V fits the view to the parts and\n"
-                     "  zones. Space tries the level as 'rube play' would, R or Esc comes back. Ctrl+Z and Ctrl+Y\n"
+                     "  zones. H types a hint (Enter keeps it, Esc drops it). Space tries the level as 'rube play' "
+                     "would, R or Esc comes back. Ctrl+Z and Ctrl+Y\n"
                      "  undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step\n"
                      "  as the solution's expectation. Esc quits (without saving).\n"
                      "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");

@@ -157,6 +157,10 @@ private:
                                             : action == GLFW_REPEAT ? KeyAction::repeat
                                                                     : KeyAction::release);
         });
+        glfwSetCharCallback(window_, [](GLFWwindow* window, unsigned int codePoint) {
+            WindowContext& self = of(window);
+            if (self.listener_) self.listener_->typed(static_cast<char32_t>(codePoint));
+        });
     }
 
     InputListener* listener_ = nullptr;

@@ -2,12 +2,12 @@
 #include "edit_window.hpp"
 
 #include "edit_session.hpp"
+#include "play_window.hpp"
 #include "scene_file.hpp"
 
 #include "rube/render/renderer.hpp"
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <ostream>
 
@@ -46,9 +46,7 @@ ExitCode editInWindow(const EditOptions& options, std::ostream& out, std::ostrea
             solution = loaded.script->placements;
         }
     }
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if (!(x11 && *x11) && !(wayland && *wayland)) {
+    if (!hasDisplay()) {
         err << "rube edit: no display (DISPLAY is not set): give it a virtual display with 'xvfb-run rube edit'\n";
         return ExitCode::failed;
     }

@@ -26,12 +26,6 @@ std::string noWindowAdvice(const PlayOptions& options) {
            " --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play " + options.level + "'";
 }
 
-bool hasDisplay() {
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    return (x11 && *x11) || (wayland && *wayland);
-}
-
 // What the window drew of one session, for its summary.
 struct FrameCounts {
     std::int64_t drawn = 0;
@@ -58,6 +52,12 @@ void printSummary(const SceneDesc& level, const PlaySession& session, const Fram
 }
 
 } // namespace
+
+bool hasDisplay() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+}
 
 ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err) {
     std::vector<IndexedLevel> index;

@@ -26,6 +26,9 @@ struct PlayOptions {
     bool vsync = true;                     ///< false with --no-vsync: draw as fast as possible
 };
 
+/// True when there is a display to open a window on (DISPLAY or WAYLAND_DISPLAY is set).
+bool hasDisplay();
+
 /// Plays a level in a window, or with no level the list of the index's levels, until it is closed
 /// (or Escape, or --quit-after), then writes the recording of the last level played and prints a
 /// summary of each. A level solved is kept in the progress file (progress.hpp). Returns ok when

@@ -206,11 +206,15 @@ rube_cli_test("level balloon summary.json has the goal frame and the hits"
 
 # `rube play` (issue 7). Without a display it says so in one line and names the ways on (exit 1);
 # bad input is found before any window is asked for (exit 2). DISPLAY is unset for all of them.
-function(rube_play_test name args exit)
-  add_test(NAME "cli: play ${name}"
+# `rube play` and `rube edit` run with DISPLAY unset.
+function(rube_windowless_test command name args exit)
+  add_test(NAME "cli: ${command} ${name}"
            COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
-                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=play|${args}" -DEXIT=${exit} ${ARGN}
+                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=${command}|${args}" -DEXIT=${exit} ${ARGN}
                    -P ${RUBE_CLI_DIR}/rube_cli.cmake)
+endfunction()
+function(rube_play_test name args exit)
+  rube_windowless_test(play "${name}" "${args}" ${exit} ${ARGN})
 endfunction()
 rube_play_test("without a display names rube run and xvfb-run" "${RUBE_GAME_LEVELS}/ramp.toml" 1
                "-DSTDERR_LINE=rube play: no display (DISPLAY is not set): render it off-screen with 'rube run ${RUBE_GAME_LEVELS}/ramp.toml --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play ${RUBE_GAME_LEVELS}/ramp.toml'")
@@ -228,10 +232,7 @@ rube_play_test("no level and an index that is not there" "--index|${RUBE_CLI_OUT
                "-DSTDERR_LINE=${RUBE_CLI_OUT}/no-index.toml: cannot open file (no LEVEL given, so 'rube play' lists the levels of ${RUBE_CLI_OUT}/no-index.toml: give a LEVEL or --index FILE)")
 # `rube edit` (issue 23): the same checks before any window, then no display is exit 1.
 function(rube_edit_test name args exit)
-  add_test(NAME "cli: edit ${name}"
-           COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
-                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=edit|${args}" -DEXIT=${exit} ${ARGN}
-                   -P ${RUBE_CLI_DIR}/rube_cli.cmake)
+  rube_windowless_test(edit "${name}" "${args}" ${exit} ${ARGN})
 endfunction()
 rube_edit_test("without a display says so" "--out|${RUBE_CLI_OUT}/new.toml" 1
                "-DSTDERR_LINE=rube edit: no display (DISPLAY is not set): give it a virtual display with 'xvfb-run rube edit'")

@@ -512,6 +512,24 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     press(Key::i);
     CHECK_THAT(editor.message(), Catch::Contains("cannot be in the inventory"));
 
+    // A switch needs `triggers`: L links it to the next part it can trigger, in turn.
+    choose("switch");
+    click({6.0, 0.5});
+    at({6.0, 0.5});
+    press(Key::l);
+    CHECK_THAT(editor.message(), Catch::StartsWith("L: nothing a switch can trigger yet"));
+    choose("cannon");
+    click({-6.0, 2.0});
+    click({-4.0, 2.0});
+    at({6.0, 0.5});
+    press(Key::l);
+    CHECK(editor.message() == "switch1 triggers cannon1");
+    press(Key::l);
+    CHECK(editor.message() == "switch1 triggers cannon2");
+    press(Key::l);
+    CHECK(editor.message() == "switch1 triggers cannon1");
+    press(Key::v);
+
     // Saved: `rube check --strict` passes the level and its solution, which replays to that step.
     control(Key::s);
     INFO(editor.message());
@@ -534,6 +552,7 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     CHECK_THAT(written, Catch::Contains("time_limit = 6\n")); // set with Down
     CHECK_THAT(written, Catch::Contains("heavy = 1\nplank = 2\n"));
     CHECK_THAT(written, Catch::Contains("[[hint]]\ntext = 'Drop it, on it.!'\n"));
+    CHECK_THAT(written, Catch::Contains("name = 'switch1'\nposition = [6, 0.5]\ntriggers = 'cannon1'\n"));
 
     // A shipped level opened with its solution keeps its inventory, spares and all.
     for (const char* name : {"ramp", "chain-reaction", "pegs"}) {

@@ -4,6 +4,7 @@
 #include "edit_session.hpp"
 
 #include "play_internal.hpp"
+#include "toml_writer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -207,6 +208,35 @@ void EditSession::markAtCursor() {
     say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
 }
 
+// L on a switch: its `triggers` goes to the next item it may trigger (or named rope), in level order.
+void EditSession::linkAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item || !state_.level.level.items[hit.index].kind->plays(PartRole::toggle) ||
+        !std::any_of(state_.level.level.items[hit.index].kind->keys().begin(),
+                     state_.level.level.items[hit.index].kind->keys().end(),
+                     [](const PartKey& key) { return key.key == "triggers"; }))
+        return say("L: point at a switch", "magnet");
+    std::vector<std::string> names;
+    for (const ItemDesc& item : state_.level.level.items)
+        if (item.kind->plays(PartRole::triggered) && !item.name.empty()) names.push_back(item.name);
+    for (const std::string& rope : state_.level.ropeNames)
+        if (!rope.empty()) names.push_back(rope);
+    if (names.empty())
+        return say("L: nothing a switch can trigger yet (a cannon, bomb, fan, magnet, rocket or rope)", "magnet");
+    ItemDesc& item = state_.level.level.items[hit.index];
+    const auto now = std::find_if(item.ownLines.begin(), item.ownLines.end(),
+                                  [](const std::string& line) { return line.starts_with("triggers = "); });
+    std::size_t next = 0;
+    if (now != item.ownLines.end())
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (*now == "triggers = " + tomlQuoted(names[i])) next = (i + 1) % names.size();
+    edit();
+    // The switch's own parameters are read when the level is saved or tried: its line is what counts.
+    std::erase_if(item.ownLines, [](const std::string& line) { return line.starts_with("triggers = "); });
+    state_.level.level.items[hit.index].ownLines.push_back("triggers = " + tomlQuoted(names[next]));
+    say(item.name + " triggers " + names[next]);
+}
+
 void EditSession::goalAtCursor() {
     const Hit hit = hitAtCursor();
     if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
@@ -296,6 +326,7 @@ void EditSession::key(Key key, KeyAction action) {
         }
         break;
     case Key::v: fitView(); break;
+    case Key::l: linkAtCursor(); break;
     case Key::h:
         hintDraft_ = std::string();
         skipTyped_ = true;

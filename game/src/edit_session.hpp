@@ -4,7 +4,7 @@
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
-/// the view to the parts; H types a hint; Space tries the level in a
+/// the view to the parts; H types a hint; L links a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
@@ -89,6 +89,7 @@ private:
     void tryIt();
     void changeSpare(int by);
     void fitView();
+    void linkAtCursor();
     void refreshCamera();
     std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
 

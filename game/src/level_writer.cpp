@@ -21,7 +21,7 @@ const char* conditionName(GoalKind kind) {
     return "";
 }
 
-std::string quoted(const std::string& text) { return tomlValue(toml::value<std::string>(text)); }
+std::string quoted(const std::string& text) { return tomlQuoted(text); }
 
 // Strings are built by appending: GCC 12 warns (-Wrestrict, wrongly) at "literal" + std::string.
 std::string pair(Vec2 v) {

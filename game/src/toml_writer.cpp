@@ -65,6 +65,8 @@ std::string tomlValue(const toml::node& node) {
     return out.str();
 }
 
+std::string tomlQuoted(const std::string& text) { return tomlValue(toml::value<std::string>(text)); }
+
 std::string tomlTables(const toml::table& table) {
     std::string text = keyValueLines(table, true);
     for (const auto& [key, value] : table) {

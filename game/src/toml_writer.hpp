@@ -10,6 +10,8 @@ namespace rube::game {
 
 /// One value: a string quoted, a number, a boolean, an array or an inline table.
 std::string tomlValue(const toml::node& node);
+/// `text` as a TOML string.
+std::string tomlQuoted(const std::string& text);
 /// A table's tables and arrays of tables as `[key]` and `[[key]]` blocks, its other keys as
 /// `key = value` lines first (a document's top level, or the lines of one block).
 std::string tomlTables(const toml::table& table);

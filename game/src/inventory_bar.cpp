@@ -78,8 +78,16 @@ std::optional<Point> InventoryBar::slotCentre(ItemKind kind) const {
     return std::nullopt;
 }
 
+std::string InventoryBar::fitted(std::string_view text, int width, int scale) {
+    std::string line(text);
+    if (render::textWidth(line, scale) <= width) return line;
+    while (!line.empty() && render::textWidth(line + "...", scale) > width) line.pop_back();
+    return line + "...";
+}
+
 void InventoryBar::draw(render::DrawList& list, const std::function<int(ItemKind)>& remaining,
-                        std::string_view modeLine, std::string_view message, render::Color messageColor) const {
+                        std::string_view modeLine, std::string_view message, render::Color messageColor,
+                        std::string_view corner) const {
     const Palette& palette = Palette::greybox();
     const render::FrameSize window = windowSize();
     const float ppm = windowCamera_.pixelsPerMetre(window);
@@ -100,8 +108,18 @@ void InventoryBar::draw(render::DrawList& list, const std::function<int(ItemKind
         const std::string label = std::string(itemKindName(slot.kind)) + " x" + std::to_string(left);
         list.text(slot.left + 6, static_cast<int>(top) + kSlotHeight - 14, label, palette["hud_text"], 1);
     }
-    list.text(kMargin, levelFrame_.height + kModeLineY, modeLine, palette["hud_text"], kTextScale);
-    list.text(kMargin, levelFrame_.height + kMessageLineY, message, messageColor, kTextScale);
+    const int width = window.width - 2 * kMargin;
+    list.text(kMargin, levelFrame_.height + kModeLineY, fitted(modeLine, width, kTextScale), palette["hud_text"],
+              kTextScale);
+    list.text(kMargin, levelFrame_.height + kMessageLineY, fitted(message, width, kTextScale), messageColor,
+              kTextScale);
+    if (!corner.empty()) {
+        // Right of the slots when there is room, else in the margin above them.
+        const int x = window.width - kMargin - render::textWidth(corner, 1);
+        const int slotsEnd = slots_.empty() ? 0 : slots_.back().left + kSlotWidth;
+        list.text(x, x > slotsEnd + kMargin ? static_cast<int>(top) + 4 : levelFrame_.height + 1, corner,
+                  palette["hud_text"], 1);
+    }
 }
 
 void drawItemIcon(ItemKind kind, Vec2 centre, double size, bool available, render::DrawList& list) {

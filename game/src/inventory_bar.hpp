@@ -43,8 +43,13 @@ public:
 
     /// Draws the bar over the bottom of the window: the slots with `remaining(kind)` each (empty
     /// ones greyed), `modeLine`, and `message` in `messageColor`.
+    /// `corner` (the cursor's coordinates) goes to the top right. A line too long for the window is
+    /// cut short with "...".
     void draw(render::DrawList& list, const std::function<int(ItemKind)>& remaining, std::string_view modeLine,
-              std::string_view message, render::Color messageColor) const;
+              std::string_view message, render::Color messageColor, std::string_view corner = {}) const;
+
+    /// `text` as drawn at `scale` in a line `width` pixels wide: whole, or cut short with "...".
+    static std::string fitted(std::string_view text, int width, int scale);
 
     /// The bar's height in pixels.
     static constexpr int kHeight = 112;

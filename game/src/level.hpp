@@ -32,12 +32,19 @@ struct Goal {
     std::optional<double> timeLimit; ///< seconds; the goal counts only when reached by then
 };
 
+/// A hint the play window shows on H, one after another.
+struct Hint {
+    std::string text;  ///< one or two short sentences
+    SourcePlace place; ///< where the file wrote it
+};
+
 /// Everything a level adds to a scene.
 struct LevelDesc {
     std::vector<ItemDesc> items;                       ///< fixed parts, in file order
     std::map<std::string, int, std::less<>> inventory; ///< placeable kind name -> how many
     std::vector<Zone> zones;                           ///< where placements may go
     std::optional<Goal> goal;                          ///< absent for plain physics scenes
+    std::vector<Hint> hints;                           ///< [[hint]]s in file order
     /// True when the file used any level feature, so `rube run` plays it as a level.
     bool isLevel() const { return goal.has_value() || !items.empty() || !inventory.empty() || !zones.empty(); }
     /// The index of the item called `name`, or -1.

@@ -1,6 +1,7 @@
 // Level files: the tables a level adds to a scene, [[item]], [inventory], [[zone]] and [goal],
 // read by the same TableReader as every other table so that errors look the same everywhere.
 #include "scene_reading.hpp"
+#include "toml_writer.hpp"
 
 #include <numbers>
 
@@ -9,6 +10,7 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kZoneKeys[] = {"min", "max"};
+constexpr std::string_view kHintKeys[] = {"text"};
 constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "time_limit"};
 constexpr std::string_view kConditionNames[] = {"target-hit", "ball-in-bucket", "all-targets"};
 
@@ -59,6 +61,13 @@ void readItem(const toml::table& table, SceneReading& reading) {
     item.name = name;
     item.place = reader.tablePlace();
     (*kind)->read(reader, item, reading);
+    // What the level writer needs to write the item back as it was read.
+    if (const toml::node* angle = table.get("angle"); angle && (angle->is_integer() || angle->is_floating_point()))
+        item.angleDegrees = angle->value<double>();
+    for (const auto& [key, value] : table) {
+        if (key == "kind" || key == "name" || key == "position" || key == "angle") continue;
+        item.ownLines.push_back(std::string(key.str()) + " = " + tomlValue(value));
+    }
     reading.scene.level.items.push_back(item);
 }
 
@@ -87,6 +96,20 @@ void readZones(TableReader& root, SceneReading& reading) {
             continue;
         }
         reading.scene.level.zones.push_back({Aabb{*min, *max}, zone.tablePlace()});
+    }
+}
+
+// Hints, in the order the player is shown them (H in the play window).
+void readHints(TableReader& root, SceneReading& reading) {
+    for (const toml::table* table : root.arrayOfTables("hint")) {
+        TableReader hint(*table, "in [[hint]]", kHintKeys, reading.diag);
+        const auto text = hint.string("text", Need::required);
+        if (!text) continue;
+        if (text->find_first_not_of(" \t\n") == std::string::npos) {
+            hint.error(hint.valuePlace("text"), "a hint's text must not be empty");
+            continue;
+        }
+        reading.scene.level.hints.push_back({*text, hint.tablePlace()});
     }
 }
 
@@ -150,6 +173,7 @@ void readLevel(TableReader& root, SceneReading& reading) {
     readInventory(root, reading);
     readZones(root, reading);
     readGoal(root, reading);
+    readHints(root, reading);
     // References between items (a switch's `triggers`) are checked once every item is known, so a
     // switch may name a later cannon.
     for (const ItemDesc& item : reading.scene.level.items) item.kind->checkReferences(item, reading);

@@ -232,10 +232,15 @@ CircleId LevelRun::ballRestingIn(const ItemDesc& bucket) const {
     return {};
 }
 
+bool LevelRun::timeUp() const {
+    const auto& goal = scene_.level.goal;
+    return goal && !goalStep_ && goal->timeLimit && pastTimeLimit(*goal->timeLimit);
+}
+
 void LevelRun::checkGoal() {
     const auto& goal = scene_.level.goal;
     if (!goal || goalStep_) return;
-    if (goal->timeLimit && world_.time() > *goal->timeLimit + 1e-9) return;
+    if (goal->timeLimit && pastTimeLimit(*goal->timeLimit)) return;
     bool reached = false;
     // Where the goal happened and what did it: the hit that completed it, or the ball in the bucket.
     Vec2 where;

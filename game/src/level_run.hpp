@@ -35,6 +35,7 @@ struct ItemState {
     CircleId circle;    ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
     double aim = 0.0;   ///< cannons: the barrel's angle now, radians
     bool hit = false;   ///< targets and switches: touched by a ball
+    bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed)
     bool fired = false; ///< cannons: have shot
     std::optional<double> timedShot;   ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
@@ -66,6 +67,8 @@ public:
     std::int64_t steps() const { return world_.stats().steps; }
     /// The step in which the goal was reached, if it has been.
     std::optional<std::int64_t> goalStep() const { return goalStep_; }
+    /// True once the goal's time limit has passed without the goal: it can no longer be reached.
+    bool timeUp() const;
     /// The level's goal, if it has one.
     const std::optional<Goal>& goal() const { return scene_.level.goal; }
     /// The index of the item called `name`, or -1.
@@ -119,6 +122,7 @@ private:
     void addItem(const ItemDesc& item);
     void checkGoal();
     CircleId ballRestingIn(const ItemDesc& bucket) const;
+    bool pastTimeLimit(double limit) const { return world_.time() > limit + 1e-9; }
 
     SceneDesc scene_;
     World world_;

@@ -3,6 +3,7 @@
 #include "level_view.hpp"
 
 #include "scene_view.hpp"
+#include "script_file.hpp"
 
 #include "rube/render/palette.hpp"
 
@@ -115,7 +116,12 @@ std::string LevelView::goalLine(const LevelRun& run) const {
     if (!run.goal()) return "no goal";
     // The status first, so a long goal text cut off at the frame's edge never hides it.
     if (run.goalStep()) return "REACHED at step " + std::to_string(*run.goalStep()) + ": " + run.goal()->text;
+    if (run.timeUp()) return timeUpLine(*run.goal());
     return "goal: " + run.goal()->text;
+}
+
+std::string LevelView::timeUpLine(const Goal& goal) {
+    return "TIME UP after " + scriptNumber(*goal.timeLimit) + " s: " + goal.text;
 }
 
 std::vector<std::string> LevelView::goalLines(const LevelRun& run) const {
@@ -141,7 +147,10 @@ void LevelView::drawHud(const LevelRun& run, std::int64_t step, render::DrawList
     list.text(kHudMargin, kHudMargin, line, palette["hud_text"], kHudScale);
     for (std::size_t i = 0; i < goal.size(); ++i)
         list.text(kHudMargin, kHudMargin + kHudLineHeight * static_cast<int>(i + 1), goal[i],
-                  run.goalStep() ? palette["goal"] : palette["hud_text"], kHudScale);
+                  run.goalStep()  ? palette["goal"]
+                  : run.timeUp() ? palette["magnet"]
+                                 : palette["hud_text"],
+                  kHudScale);
 }
 
 // Each named item's name just above its right shoulder, from its position now (a moving target's

@@ -38,6 +38,8 @@ public:
     std::string goalLine(const LevelRun& run) const;
     /// The HUD's goal line as drawn: wrapped to the frame's width, at most two lines.
     std::vector<std::string> goalLines(const LevelRun& run) const;
+    /// The goal line once the time limit has passed without the goal (the play window's fail state).
+    static std::string timeUpLine(const Goal& goal);
     /// The camera every frame is drawn through.
     const render::Camera& camera() const { return camera_; }
 

@@ -1,6 +1,7 @@
 // The `rube` command: one class per subcommand sets up its options and runs it; main() only
 // parses the command line and hands over to the subcommand chosen.
 #include "check_command.hpp"
+#include "edit_window.hpp"
 #include "exit_codes.hpp"
 #include "items_command.hpp"
 #include "play_window.hpp"
@@ -94,19 +95,28 @@ constexpr const char* kCheckFooter =
 
 constexpr const char* kPlayFooter =
     "The window shows the level as 'rube run' draws it, with the inventory bar below.\n"
+    "Levels: with no LEVEL, a list of the levels of levels/index.toml (--index FILE) in order, with\n"
+    "  those solved marked; Enter or a click plays one, Esc in a level goes back to the list. Solved\n"
+    "  levels are kept in $XDG_DATA_HOME/rube/solved.txt (else ~/.local/share/rube/solved.txt).\n"
     "Editing: drag an item from the bar into a green placement zone; it turns red, with the reason\n"
     "  on the bar, where it may not go. Wheel or [ ] turns planks, ramps and fans by 15 degrees;\n"
     "  drag a placed item to move it, right-click or Delete removes it (or drop it on the bar).\n"
     "  Drag from a cannon to aim it (the predicted arc follows); the wheel over it turns 1 degree.\n"
+    "  Ctrl+Z undoes an edit, Ctrl+Y redoes it (100 deep); G turns the 5 cm grid off (1 mm) and on;\n"
+    "  the bar's top right shows the cursor's coordinates. H shows the level's next hint.\n"
     "Keys: Space runs the machine, R resets to editing with placements kept, P pauses, S slow\n"
     "  motion (a tenth of real time), D toggles trails, C clears them, Esc quits.\n"
     "Running: click a cannon to fire it, a bomb to set it off, a switch, fan or magnet to flip it.\n"
+    "  Past the goal's time_limit without the goal the HUD and bar say TIME UP; R retries. After the\n"
+    "  goal, N goes to the next level and W plays the intended solution (NAME.solution.toml).\n"
     "Recording: --record FILE writes the placements, the aims (step-0 actions), the actions taken\n"
     "  while running (at their step numbers) and, if the goal was reached, an expectation that it\n"
     "  is reached again; 'rube run LEVEL --script FILE --out DIR' replays it off-screen, step for\n"
-    "  step. The script records the session as it ends: after R, the edits.\n"
+    "  step. The script records the last level's session as it ends: after R, the edits.\n"
+    "--quit-after N closes the window when the machine has taken N steps, whatever the frame rate.\n"
     "Without a display, play says so: use 'rube run' or 'xvfb-run rube play LEVEL'.\n"
-    "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, script, --record path).";
+    "Exit status: 0 done, 1 the last run ended without its goal (as 'rube run') or no window could\n"
+    "  be opened, 2 bad input (level, index, script, --record path).";
 
 constexpr const char* kMainFooter =
     "Scene files are TOML: see levels/physics/ for examples and game/scene-format.md for every key.\n"
@@ -314,7 +324,12 @@ PlayCommand::PlayCommand(CLI::App& app) {
     command_ = app.add_subcommand("play",
                                   "Play a level in a window with the mouse and keys; optionally record it as a script");
     command_->footer(kPlayFooter);
-    command_->add_option("level", options_.level, "The level file (.toml) to play")->required()->type_name("LEVEL");
+    command_->add_option("level", options_.level, "The level file (.toml) to play; none: the list of levels")
+        ->type_name("LEVEL");
+    command_
+        ->add_option("--index", options_.index,
+                     "The levels in order, for the list and N (default levels/index.toml, from where rube runs)")
+        ->type_name("FILE");
     command_
         ->add_option("--script", options_.script,
                      "Start from this script: its placements and aims; its other actions play as the machine runs")
@@ -329,9 +344,9 @@ PlayCommand::PlayCommand(CLI::App& app) {
     command_->add_flag("--run", options_.runAtOnce, "Start the machine at once, as if Space were pressed");
     quitAfterOption_ = command_
                            ->add_option("--quit-after", quitAfter_,
-                                        "Close the window N frames after the machine starts")
+                                        "Close the window once the machine has taken N steps")
                            ->type_name("N")
-                           ->check(countFromOne("frames"));
+                           ->check(countFromOne("steps"));
     command_
         ->add_option("--steps-per-frame", options_.stepsPerFrame,
                      "Take K steps per frame drawn instead of following real time")
@@ -346,6 +361,49 @@ ExitCode PlayCommand::run() {
     if (*sizeOption_) options_.size = *parseFrameSize(size_); // the validator has accepted it
     options_.vsync = !noVsync_;
     return rube::game::playInWindow(options_, std::cout, std::cerr);
+}
+
+// `rube edit [LEVEL]`: the editor's options.
+class EditCommand : Command {
+public:
+    explicit EditCommand(CLI::App& app);
+    bool chosen() const { return static_cast<bool>(*command_); }
+    ExitCode run();
+
+private:
+    CLI::App* command_ = nullptr;
+    rube::game::EditOptions options_;
+    std::string size_ = "1280x720";
+    CLI::Option* sizeOption_ = nullptr;
+};
+
+EditCommand::EditCommand(CLI::App& app) {
+    command_ = app.add_subcommand("edit", "Make a level (or change LEVEL) in a window, and save it with its solution");
+    command_->footer("A click places the kind shown on the bar (Tab picks the next; every kind, without limit) or\n"
+                     "  picks up a part to move it; [ ] or the wheel turns it by 15 degrees; right-click or Delete\n"
+                     "  removes a part or a zone. Z switches to zones: a drag draws a placement zone, a drag from a\n"
+                     "  zone's corner resizes it. P marks the part under the cursor as the player's: it is saved as a\n"
+                     "  placement of NAME.solution.toml and counted into the inventory (P again makes it fixed); I\n"
+                     "  and K add and take a spare of the kind shown. T makes the target or bucket under the cursor\n"
+                     "  the goal (10 s; Up and Down change the time limit by 1 s). V fits the view to the parts and\n"
+                     "  zones. L on a switch links it to the next part it can trigger. H types a hint (Enter keeps it, "
+                     "Esc drops it). Space tries the level as 'rube play' "
+                     "would, R or Esc comes back. Ctrl+Z and Ctrl+Y\n"
+                     "  undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step\n"
+                     "  as the solution's expectation. Esc quits (without saving).\n"
+                     "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
+    command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
+        ->type_name("LEVEL");
+    command_->add_option("--out", options_.out, "Save to FILE (default: LEVEL, else new-level.toml)")
+        ->type_name("FILE");
+    sizeOption_ = command_->add_option("--size", size_, "Level area in pixels (default 1280x720)")
+                      ->type_name("WxH")
+                      ->check(CLI::Validator(frameSizeError, ""));
+}
+
+ExitCode EditCommand::run() {
+    if (*sizeOption_) options_.size = *parseFrameSize(size_); // the validator has accepted it
+    return rube::game::editInWindow(options_, std::cout, std::cerr);
 }
 
 // `rube check FILE...`: the files, the level scripts are checked against, and --strict.
@@ -424,7 +482,7 @@ std::optional<ExitCode> parseCommandLine(CLI::App& app, int argc, char** argv) {
         const auto commands = std::as_const(app).get_subcommands([](const CLI::App*) { return true; });
         if (std::none_of(commands.begin(), commands.end(), [&](const CLI::App* c) { return c->check_name(argv[1]); })) {
             std::cerr << "rube: unknown command '" << argv[1]
-                      << "': the commands are run, play, check and items (see 'rube --help')\n";
+                      << "': the commands are run, play, edit, check and items (see 'rube --help')\n";
             return ExitCode::badInput;
         }
     }
@@ -458,11 +516,13 @@ int main(int argc, char** argv) {
     RunCommand run(app);
     CheckCommand check(app);
     PlayCommand play(app);
+    EditCommand edit(app);
     ItemsCommand items(app);
 
     if (const std::optional<ExitCode> done = parseCommandLine(app, argc, argv)) return rube::game::exitStatus(*done);
     if (run.chosen()) return rube::game::exitStatus(run.run());
     if (play.chosen()) return rube::game::exitStatus(play.run());
+    if (edit.chosen()) return rube::game::exitStatus(edit.run());
     if (items.chosen()) return rube::game::exitStatus(items.run());
     return rube::game::exitStatus(check.run());
 }

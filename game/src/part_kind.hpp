@@ -67,6 +67,10 @@ struct ItemDesc {
     double angle = 0.0;      ///< planks and ramps: tilt; cannons: aim; fans and rockets: the way they push (radians)
     SourcePlace place;       ///< where the file wrote it, for messages about it
     PartParams params;       ///< the kind's own parameter struct, at its defaults unless the file set them
+    std::optional<double> angleDegrees; ///< `angle` as the file wrote it (degrees), so the level writer
+                                        ///< writes back exactly what it read; none when not written
+    std::vector<std::string> ownLines;  ///< the kind's other keys as TOML lines ("speed = 10"), in the
+                                        ///< reader's order, for the level writer
 };
 
 /// The physics bodies one item adds (circles and segments, in order) and the field it brings.

@@ -13,7 +13,8 @@ namespace {
 struct Capsule {
     Vec2 a, b;
     double radius = 0.0;
-    std::string what; // how a message names it: "the fixed segment 2", "placement 1 (plank)"
+    std::string what;  // how a message names it: "the fixed segment 2 ([0, 0] to [8, 0])", "placement 1 (plank)"
+    std::string brief; // and the bar: "the fixed segment 2", "your plank 1"
 };
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
@@ -34,9 +35,14 @@ double segmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 bool overlaps(const Capsule& p, const Capsule& q) { return segmentDistance(p.a, p.b, q.a, q.b) < p.radius + q.radius; }
 
-void addBodies(const ItemBodies& bodies, const std::string& what, std::vector<Capsule>& out) {
-    for (const CircleDef& c : bodies.circles) out.push_back({c.position, c.position, c.radius, what});
-    for (const SegmentDef& s : bodies.segments) out.push_back({s.a, s.b, s.radius, what});
+void addBodies(const ItemBodies& bodies, const std::string& what, const std::string& brief, std::vector<Capsule>& out) {
+    for (const CircleDef& c : bodies.circles) out.push_back({c.position, c.position, c.radius, what, brief});
+    for (const SegmentDef& s : bodies.segments) out.push_back({s.a, s.b, s.radius, what, brief});
+}
+
+// A pair rounded to centimetres, for the bar: [0.65, 3.45], not [0.650961894323342, 3.45].
+std::string roundedPair(Vec2 v) {
+    return formatPair(std::round(v.x * 100.0) / 100.0 + 0.0, std::round(v.y * 100.0) / 100.0 + 0.0);
 }
 
 std::string itemWords(const ItemDesc& item) {
@@ -51,13 +57,15 @@ std::vector<Capsule> fixedParts(const SceneDesc& scene) {
     std::vector<Capsule> parts;
     for (std::size_t i = 0; i < scene.circles.size(); ++i)
         parts.push_back({scene.circles[i].position, scene.circles[i].position, scene.circles[i].radius,
-                         "the fixed circle " + std::to_string(i)});
+                         "the fixed circle " + std::to_string(i), "the fixed circle " + std::to_string(i)});
     for (std::size_t i = 0; i < scene.segments.size(); ++i)
         parts.push_back({scene.segments[i].a, scene.segments[i].b, scene.segments[i].radius,
                          "the fixed segment " + std::to_string(i) + " (" +
                              formatPair(scene.segments[i].a.x, scene.segments[i].a.y) + " to " +
-                             formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")"});
-    for (const ItemDesc& item : scene.level.items) addBodies(item.kind->room(item), itemWords(item), parts);
+                             formatPair(scene.segments[i].b.x, scene.segments[i].b.y) + ")",
+                         "the fixed segment " + std::to_string(i)});
+    for (const ItemDesc& item : scene.level.items)
+        addBodies(item.kind->room(item), itemWords(item), itemWords(item), parts);
     return parts;
 }
 
@@ -96,7 +104,7 @@ std::vector<std::pair<std::size_t, std::size_t>> overlappingItems(const SceneDes
     std::vector<std::vector<Capsule>> shapes;
     for (const ItemDesc& item : scene.level.items) {
         shapes.emplace_back();
-        addBodies(item.kind->room(item), itemWords(item), shapes.back());
+        addBodies(item.kind->room(item), itemWords(item), itemWords(item), shapes.back());
     }
     for (std::size_t i = 0; i < shapes.size(); ++i)
         for (std::size_t j = i + 1; j < shapes.size(); ++j)
@@ -117,12 +125,15 @@ std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const st
         const ItemDesc item = placedItem(p);
         const std::string kind(itemKindName(p.kind));
         const std::string head = "placement refused: " + kind + " at " + formatPair(p.position.x, p.position.y) + " ";
-        const auto refuse = [&](std::string why) { refusals.push_back(PlacementRefusal{i, head + why}); };
+        const auto refuse = [&](std::string why, std::string brief) {
+            refusals.push_back(PlacementRefusal{i, head + why, kind + " at " + roundedPair(p.position) + ": " + brief});
+        };
         const auto stock = scene.level.inventory.find(kind);
         const int have = stock == scene.level.inventory.end() ? 0 : stock->second;
         if (used[kind] + 1 > have) {
             refuse("exceeds the inventory: the level gives " + std::to_string(have) + " " + kindCount(p.kind, have) +
-                   " and this is number " + std::to_string(used[kind] + 1));
+                       " and this is number " + std::to_string(used[kind] + 1),
+                   "none left (the level gives " + std::to_string(have) + ")");
             continue;
         }
         const Aabb extent = itemExtent(item);
@@ -132,17 +143,21 @@ std::vector<PlacementRefusal> placementRefusals(const SceneDesc& scene, const st
             refuse(scene.level.zones.empty()
                        ? std::string("is outside every placement zone (the level has none)")
                        : "is not wholly inside a placement zone (it spans " + formatPair(extent.min.x, extent.min.y) +
-                             " to " + formatPair(extent.max.x, extent.max.y) + ")");
+                             " to " + formatPair(extent.max.x, extent.max.y) + ")",
+                   scene.level.zones.empty() ? std::string("the level has no placement zone")
+                                             : "not inside a zone (it spans " + roundedPair(extent.min) + " to " +
+                                                   roundedPair(extent.max) + ")");
             continue;
         }
         std::vector<Capsule> mine;
-        addBodies(itemBodies(item), "placement " + std::to_string(i + 1) + " (" + kind + ")", mine);
+        addBodies(itemBodies(item), "placement " + std::to_string(i + 1) + " (" + kind + ")",
+                  "your " + kind + " (placement " + std::to_string(i + 1) + ")", mine);
         const Capsule* hit = nullptr;
         for (const Capsule& shape : mine)
             for (const Capsule& other : taken)
                 if (!hit && overlaps(shape, other)) hit = &other;
         if (hit) {
-            refuse("overlaps " + hit->what);
+            refuse("overlaps " + hit->what, "overlaps " + hit->brief);
             continue;
         }
         taken.insert(taken.end(), mine.begin(), mine.end());

@@ -30,6 +30,8 @@ struct Placement {
 struct PlacementRefusal {
     std::size_t index = 0; ///< which placement, in order
     std::string message;   ///< "placement refused: plank at [1, 2] overlaps the fixed segment 3 (...)"
+    std::string brief;     ///< the same for the play window's bar, short and rounded to centimetres:
+                           ///< "plank at [1, 2]: overlaps the fixed segment 3"
 };
 
 /// Checks every placement in order against the level's rules: the kind is in the inventory and

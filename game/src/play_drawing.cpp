@@ -4,6 +4,8 @@
 
 #include "rube/render/palette.hpp"
 
+#include <cstdio>
+
 namespace rube::game {
 
 namespace {
@@ -34,21 +36,35 @@ void PlaySession::drawEditing(render::DrawList& list) const {
     outlineBodies(drag_->placement, {palette[colour].withAlpha(0x90), palette[colour], 3.0f});
 }
 
+// The bar's mode line: the mode and the keys that matter in it.
+std::string PlaySession::modeLine() const {
+    if (!run_) return "EDIT  drag items in, [ ] turns, right-click removes, Ctrl+Z undo, G grid, H hint, Space runs";
+    std::string line = "RUN step " + std::to_string(run_->steps()) + (paused_ ? " PAUSED" : "") +
+                       (slow_ ? " SLOW" : "");
+    if (run_->goalStep()) return line + "  GOAL  N next level  W solution  R edit  Esc quit";
+    if (run_->timeUp()) return line + "  TIME UP  R retry  H hint  Esc quit";
+    return line + "  P pause S slow D trails C clear R edit Esc quit";
+}
+
+// The cursor's world coordinates, rounded to centimetres, and the grid's state.
+std::string PlaySession::cursorLine() const {
+    char text[96];
+    std::snprintf(text, sizeof text, "x %.2f  y %.2f  %s", cursorWorld_.x + 0.0, cursorWorld_.y + 0.0,
+                  grid_ ? "grid 5 cm" : "grid off");
+    return text;
+}
+
 void PlaySession::draw(render::DrawList& list) const {
     const Palette& palette = Palette::greybox();
-    std::string modeLine;
     if (run_) {
         view_.draw(*run_, run_->steps(), list);
         if (showTrails_) trails_->draw(list, palette["trail"], 2.0f);
-        modeLine = "RUN step " + std::to_string(run_->steps()) + (paused_ ? " PAUSED" : "") + (slow_ ? " SLOW" : "") +
-                   "  P pause S slow D trails C clear R edit Esc quit";
     } else {
         view_.draw(*preview_, 0, list);
         drawEditing(list);
-        modeLine = "EDIT  drag items in, [ ] turns, right-click removes, drag a cannon to aim, Space runs";
     }
     bar_.draw(
-        list, [this](ItemKind kind) { return remaining(kind); }, modeLine, message_, messageColor_);
+        list, [this](ItemKind kind) { return remaining(kind); }, modeLine(), message_, messageColor_, cursorLine());
 }
 
 } // namespace rube::game

@@ -18,7 +18,8 @@ using play::normalDegrees;
 using play::number;
 using play::snap;
 
-constexpr double kGridPerMetre = 20.0; // placements snap to 5 cm, so scripts read as round numbers
+constexpr double kGridPerMetre = 20.0;   // placements snap to 5 cm, so scripts read as round numbers
+constexpr double kFinePerMetre = 1000.0; // and with the grid off (G) to 1 mm, still short in a script
 constexpr float kPickPixels = 6.0f;    // how near the cursor must be to an item to pick it
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
@@ -41,7 +42,8 @@ int PlaySession::remaining(ItemKind kind) const {
 
 void PlaySession::updateDrag() {
     Placement& p = drag_->placement;
-    p.position = {snap(cursorWorld_.x, kGridPerMetre), snap(cursorWorld_.y, kGridPerMetre)};
+    const double perMetre = grid_ ? kGridPerMetre : kFinePerMetre;
+    p.position = {snap(cursorWorld_.x, perMetre), snap(cursorWorld_.y, perMetre)};
     drag_->refusal.reset();
     if (bar_.contains(cursor_)) {
         say("release on the bar to put the " + std::string(itemKindName(p.kind)) + " back");
@@ -50,23 +52,26 @@ void PlaySession::updateDrag() {
     std::vector<Placement> candidate = placements_;
     candidate.push_back(p);
     drag_->refusal = checkPlacements(level_, candidate);
-    if (drag_->refusal) say(drag_->refusal->message, "magnet");
+    if (drag_->refusal) say(drag_->refusal->brief, "magnet");
     else
         say(std::string(itemKindName(p.kind)) + " at " + formatPair(p.position.x, p.position.y) + ": release to place");
 }
 
 void PlaySession::drop() {
+    const Edits before = edits();
     Drag drag = std::move(*drag_);
     drag_.reset();
     const std::string kind(itemKindName(drag.placement.kind));
     if (bar_.contains(cursor_)) {
+        if (drag.liftedFrom) history_.record(before); // a placed item back to the bar: an edit
         say("put back: " + kind);
     } else if (drag.refusal) {
         // A refused move puts the item back where it was; a refused new item goes back to the bar.
         if (drag.liftedFrom)
             placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom), drag.original);
-        say("not placed: " + drag.refusal->message, "magnet");
+        say("not placed: " + drag.refusal->brief, "magnet");
     } else {
+        history_.record(before);
         const auto at = drag.liftedFrom ? placements_.begin() + static_cast<std::ptrdiff_t>(*drag.liftedFrom)
                                         : placements_.end();
         placements_.insert(at, drag.placement);
@@ -85,6 +90,7 @@ void PlaySession::turn(double degrees) {
         return;
     }
     const Placement before = *p;
+    const Edits edited = edits();
     p->angleDegrees = normalDegrees(p->angleDegrees + degrees);
     p->angle = scriptRadians(p->angleDegrees);
     if (drag_) {
@@ -94,14 +100,16 @@ void PlaySession::turn(double degrees) {
     // A placed item turns only where it still fits.
     if (const auto refusal = checkPlacements(level_, placements_)) {
         *p = before;
-        say("cannot turn: " + refusal->message, "magnet");
+        say("cannot turn: " + refusal->brief, "magnet");
         return;
     }
+    history_.record(edited);
     rebuildPreview();
     say(std::string(itemKindName(p->kind)) + " turned to " + number(p->angleDegrees) + " degrees");
 }
 
 void PlaySession::removeAt(std::size_t index) {
+    recordEdit();
     say("removed " + std::string(itemKindName(placements_[index].kind)) + "; it is back in the bar");
     placements_.erase(placements_.begin() + static_cast<std::ptrdiff_t>(index));
     rebuildPreview();
@@ -145,6 +153,52 @@ int PlaySession::levelItemAtCursor(bool (*fits)(ItemKind)) const {
             return static_cast<int>(i);
     }
     return -1;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Undo and redo
+
+PlaySession::Edits PlaySession::edits() const {
+    Edits now{placements_, aims_, scripted_};
+    if (drag_ && drag_->liftedFrom)
+        now.placements.insert(now.placements.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom),
+                              drag_->original);
+    return now;
+}
+
+void PlaySession::recordEdit() { history_.record(edits()); }
+
+void PlaySession::restore(Edits edits) {
+    placements_ = std::move(edits.placements);
+    aims_ = std::move(edits.aims);
+    scripted_ = std::move(edits.scripted);
+    rebuildPreview();
+}
+
+void PlaySession::cancelDrag() {
+    if (!drag_) return;
+    if (drag_->liftedFrom)
+        placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
+    drag_.reset();
+}
+
+bool PlaySession::undo() { return travel(true); }
+
+bool PlaySession::redo() { return travel(false); }
+
+bool PlaySession::travel(bool back) {
+    if (run_) return false; // the machine runs what was placed; R first
+    cancelDrag();
+    aiming_ = -1;
+    Edits now = edits();
+    if (!(back ? history_.undo(now) : history_.redo(now))) {
+        say(back ? "nothing to undo" : "nothing to redo");
+        return false;
+    }
+    restore(std::move(now));
+    say(back ? "undone (" + std::to_string(history_.undoable()) + " more to undo, Ctrl+Y redoes)"
+             : "redone (" + std::to_string(history_.redoable()) + " more to redo)");
+    return true;
 }
 
 } // namespace rube::game

@@ -42,6 +42,7 @@ void PlaySession::mouseButton(MouseButton button, bool pressed) {
     }
     if (button == MouseButton::right && pressed) {
         if (drag_) {
+            if (drag_->liftedFrom) recordEdit(); // a placed item goes back to the bar: an edit
             say("put back: " + std::string(itemKindName(drag_->placement.kind)));
             drag_.reset();
             rebuildPreview();
@@ -72,6 +73,7 @@ void PlaySession::mouseButton(MouseButton button, bool pressed) {
         return;
     }
     if (const int cannon = levelItemAtCursor(aimable); cannon >= 0) {
+        recordEdit();
         aiming_ = cannon;
         aimAtCursor();
         return;
@@ -97,6 +99,7 @@ void PlaySession::scrolled(float notches) {
             a.item = level_.level.items[static_cast<std::size_t>(cannon)].name;
             a.angleDegrees = normalDegrees(snap(now, kAimStepsPerDegree) + clicks);
             a.angle = scriptRadians(a.angleDegrees);
+            recordEdit();
             aims_[cannon] = a;
             takeAction(a, *preview_);
             say("aim " + a.item + ": " + number(a.angleDegrees) + " degrees");
@@ -107,6 +110,7 @@ void PlaySession::scrolled(float notches) {
 }
 
 void PlaySession::key(Key key, KeyAction action) {
+    if (key == Key::control) control_ = action != KeyAction::release;
     if (action == KeyAction::release) return;
     // Turning repeats while the key is held; every other key acts once per press.
     if (key == Key::leftBracket || key == Key::rightBracket) {
@@ -115,6 +119,23 @@ void PlaySession::key(Key key, KeyAction action) {
     }
     if (action == KeyAction::repeat) return;
     switch (key) {
+    case Key::z:
+        if (control_) undo();
+        break;
+    case Key::y:
+        if (control_) redo();
+        break;
+    case Key::g:
+        grid_ = !grid_;
+        say(grid_ ? "grid on: items snap to 5 cm" : "grid off: items snap to 1 mm");
+        if (drag_) updateDrag();
+        break;
+    case Key::h: showHint(); break;
+    case Key::w: watchSolution(); break;
+    case Key::n:
+        if (run_ && run_->goalStep()) next_ = true;
+        else say("reach the goal first: then N goes to the next level", "magnet");
+        break;
     case Key::space:
         if (!run_) start();
         break;
@@ -133,6 +154,7 @@ void PlaySession::key(Key key, KeyAction action) {
     case Key::backspace:
         if (run_) break;
         if (drag_) {
+            if (drag_->liftedFrom) recordEdit();
             drag_.reset();
             rebuildPreview();
         } else if (const int i = placedItemAtCursor(); i >= 0) {
@@ -142,10 +164,7 @@ void PlaySession::key(Key key, KeyAction action) {
     case Key::escape:
         if (drag_) {
             // Escape while dragging cancels the drag: a lifted item goes back where it was.
-            if (drag_->liftedFrom)
-                placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom),
-                                   drag_->original);
-            drag_.reset();
+            cancelDrag();
             rebuildPreview();
         } else {
             quit_ = true;

@@ -1,8 +1,11 @@
 #pragma once
-/// Internal to the play session's files (play_session.cpp, play_input.cpp, play_editing.cpp): the
+/// Internal to the play session's files (play_*.cpp) and the editor's (edit_*.cpp): the camera,
 /// snapping, angle spelling and trail sizes they share.
 
+#include "scene.hpp"
 #include "script_file.hpp"
+
+#include "rube/render/camera.hpp"
 
 #include <cmath>
 #include <cstddef>
@@ -24,6 +27,9 @@ inline double normalDegrees(double degrees) {
     while (degrees <= -180.0) degrees += 360.0;
     return degrees;
 }
+
+/// The camera a level is drawn through: its [view], else what frames it (as `rube run` draws it).
+render::Camera levelCamera(const SceneDesc& level, render::FrameSize frame);
 
 /// Messages spell numbers as scripts do, so the bar says what a recording will hold.
 inline std::string number(double value) { return scriptNumber(value); }

@@ -25,11 +25,6 @@ constexpr double kSlowMotion = 0.1;  // S: the fraction of real time the machine
 // The levels' items a click uses while running.
 bool usable(ItemKind kind) { return kind->clickAction().has_value(); }
 
-render::Camera levelCamera(const SceneDesc& level, render::FrameSize frame) {
-    const LevelRun start(level, {});
-    return sceneCamera(frameScene(level, start.world()), frame);
-}
-
 std::vector<ItemKind> stockOf(const SceneDesc& level) {
     std::vector<ItemKind> kinds;
     for (ItemKind kind : allPartKinds())
@@ -39,10 +34,16 @@ std::vector<ItemKind> stockOf(const SceneDesc& level) {
 
 } // namespace
 
+render::Camera play::levelCamera(const SceneDesc& level, render::FrameSize frame) {
+    const LevelRun start(level, {});
+    return sceneCamera(frameScene(level, start.world()), frame);
+}
+
 PlaySession::PlaySession(SceneDesc level, std::string levelPath, render::FrameSize levelFrame)
     : level_(std::move(level)), levelPath_(std::move(levelPath)),
-      bar_(levelCamera(level_, levelFrame), levelFrame, stockOf(level_)),
-      view_(level_.name, levelCamera(level_, levelFrame), levelFrame), messageColor_(Palette::greybox()["hud_text"]) {
+      bar_(play::levelCamera(level_, levelFrame), levelFrame, stockOf(level_)),
+      view_(level_.name, play::levelCamera(level_, levelFrame), levelFrame),
+      messageColor_(Palette::greybox()["hud_text"]) {
     rebuildPreview();
     say(level_.description.empty() ? "place items from the bar, then press Space" : level_.description);
 }
@@ -78,12 +79,9 @@ render::Point PlaySession::pixelOf(Vec2 world) const { return bar_.toPixel(world
 // Running
 
 void PlaySession::start() {
-    if (drag_) {
-        if (drag_->liftedFrom)
-            placements_.insert(placements_.begin() + static_cast<std::ptrdiff_t>(*drag_->liftedFrom), drag_->original);
-        drag_.reset();
-    }
+    cancelDrag();
     aiming_ = -1;
+    timeUpSaid_ = false;
     run_ = std::make_unique<LevelRun>(level_, placements_);
     // The aims are the script's step-0 actions, taken the way `rube run` takes them.
     for (const auto& [item, action] : aims_) takeAction(action, *run_);
@@ -122,13 +120,12 @@ void PlaySession::reset() {
 }
 
 void PlaySession::step() {
-    if (!run_) return;
+    if (!run_ || (stopAt_ && run_->steps() >= *stopAt_)) return;
     const bool reachedBefore = run_->goalStep().has_value();
     run_->step();
     trails_->record(run_->world());
     takeScripted();
-    if (!reachedBefore && run_->goalStep())
-        say("GOAL REACHED at step " + std::to_string(*run_->goalStep()) + " - R edits again, Esc quits", "goal");
+    goalMessages(reachedBefore);
 }
 
 void PlaySession::advance(double seconds) {

@@ -7,6 +7,7 @@
 /// play_input.cpp, play_editing.cpp and play_drawing.cpp.
 
 #include "debug_overlays.hpp"
+#include "edit_history.hpp"
 #include "inventory_bar.hpp"
 #include "level_run.hpp"
 #include "level_view.hpp"
@@ -52,6 +53,22 @@ public:
     void advance(double seconds);
     /// Takes one step now, if the machine runs (paused or not): for fixed pacing and tests.
     void step();
+    /// The run takes no step past step `n` (--quit-after N): advance() and step() stop there.
+    void stopAtStep(std::int64_t n) { stopAt_ = n; }
+
+    /// Takes back the last edit (Ctrl+Z): a placement, move, turn, removal or aim. False if none.
+    bool undo();
+    /// Does again the last edit undone (Ctrl+Y). False if none.
+    bool redo();
+    /// Shows the level's next [[hint]] on the bar (H), from the first again after the last.
+    void showHint();
+    /// The level's intended solution (NAME.solution.toml), which W plays once the level is solved.
+    void setSolution(ScriptDesc solution) { solution_ = std::move(solution); }
+    /// Marks the level as solved before this session (the player's progress): W may show the solution.
+    void markSolved() { solved_ = true; }
+    /// Replaces the edits with the intended solution's and runs it (W), if the level is solved; the
+    /// player's own edits come back with R and Ctrl+Z.
+    void watchSolution();
 
     /// Fills `list` with the window's frame: the level as `rube run` draws it (with the zones,
     /// the item being dragged and the hovered item while editing), then the inventory bar.
@@ -74,6 +91,17 @@ public:
     bool trailsShown() const { return showTrails_; }
     /// True once the player asked to quit (Escape).
     bool quitRequested() const { return quit_; }
+    /// True once the player asked for the next level (N, after the goal).
+    bool nextRequested() const { return next_; }
+    /// True once the goal has been reached in this session (or markSolved() was called).
+    bool solved() const { return solved_; }
+    /// True when the running machine has passed the goal's time limit without the goal: the fail state.
+    bool timeUp() const { return run_ && run_->timeUp(); }
+    /// True while placements snap to the 5 cm grid (G toggles it; off, they snap to millimetres).
+    bool gridSnap() const { return grid_; }
+    /// How many edits can be undone and redone.
+    std::size_t undoable() const { return history_.undoable(); }
+    std::size_t redoable() const { return history_.redoable(); }
     /// The items placed so far, in the order they were placed.
     const std::vector<Placement>& placements() const { return placements_; }
     /// How many of `kind` are left to place.
@@ -99,6 +127,7 @@ private:
     };
 
     void rebuildPreview();
+    void cancelDrag();
     void updateDrag();
     void drop();
     void turn(double degrees);
@@ -111,6 +140,21 @@ private:
     void takeScripted();
     void say(std::string text, const char* colour = "hud_text");
     void drawEditing(render::DrawList& list) const;
+    std::string modeLine() const;
+    std::string cursorLine() const;
+    void goalMessages(bool reachedBefore);
+
+    /// What an edit may change, as the history keeps it.
+    struct Edits {
+        std::vector<Placement> placements;
+        std::map<int, Action> aims;
+        std::vector<Action> scripted;
+    };
+    Edits edits() const;
+    /// Before an edit: the edits as they stand, with a lifted item back where it was.
+    void recordEdit();
+    void restore(Edits edits);
+    bool travel(bool back); // undo (back) or redo
 
     SceneDesc level_;
     std::string levelPath_;
@@ -135,6 +179,15 @@ private:
     std::unique_ptr<Trails> trails_;
     double owedSeconds_ = 0.0;
     bool quit_ = false;
+    bool next_ = false;
+    bool control_ = false; // a Control key is held
+    bool grid_ = true;
+    bool solved_ = false;
+    bool timeUpSaid_ = false;
+    std::size_t nextHint_ = 0;
+    std::optional<ScriptDesc> solution_;
+    std::optional<std::int64_t> stopAt_;
+    EditHistory<Edits> history_;
 };
 
 } // namespace rube::game

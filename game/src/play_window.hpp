@@ -15,20 +15,26 @@ namespace rube::game {
 
 /// What `rube play` was asked to do.
 struct PlayOptions {
-    std::string level;                     ///< the level file
+    std::string level;                       ///< the level file; empty: the list of the index's levels
+    std::string index = "levels/index.toml"; ///< --index: the levels' order, for the list and N
     std::string script;                    ///< --script: start from its placements and aims
     std::string record;                    ///< --record: write the session as a script here when it ends
     render::FrameSize size{1280, 720};     ///< --size of the level area (the bar adds its height)
     bool runAtOnce = false;                ///< --run: start the machine without waiting for Space
-    std::optional<std::int64_t> quitAfter; ///< --quit-after N: close N frames after the machine starts
+    std::optional<std::int64_t> quitAfter; ///< --quit-after N: close when the machine has taken N steps
     int stepsPerFrame = 0;                 ///< --steps-per-frame K: fixed pace; 0 follows real time
     bool vsync = true;                     ///< false with --no-vsync: draw as fast as possible
 };
 
-/// Plays a level in a window until it is closed (or Escape, or --quit-after), then writes the
-/// recording and prints a summary. Returns ok when done, failed when no window could be opened
-/// (the message names the ways on without a display) or the recording not written, badInput for
-/// the level, the script or the record path.
+/// True when there is a display to open a window on (DISPLAY or WAYLAND_DISPLAY is set).
+bool hasDisplay();
+
+/// Plays a level in a window, or with no level the list of the index's levels, until it is closed
+/// (or Escape, or --quit-after), then writes the recording of the last level played and prints a
+/// summary of each. A level solved is kept in the progress file (progress.hpp). Returns ok when
+/// done, failed when the last run ended without its goal, no window could be opened (the message
+/// names the ways on without a display) or the recording not written, badInput for the level, the
+/// index, the script or the record path.
 ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace rube::game

@@ -53,6 +53,8 @@ struct SceneDesc {
     std::vector<std::string> bodyNames;    ///< the `name` of each box or capsule, "" when unnamed
     std::vector<ScenePivot> pivots;        ///< [[pivot]] in file order
     LevelDesc level;                       ///< items, inventory, zones and goal: empty for a physics scene
+    std::string physicsToml;               ///< the file's physics tables ([world], [[segment]], ...) as TOML, as read:
+                                           ///< the level writer writes them back unchanged
 
     /// Steps a run takes when the caller names none: the duration rounded up to whole steps, else 600.
     std::int64_t defaultSteps() const;

@@ -3,6 +3,7 @@
 
 #include "method_budget.hpp"
 #include "scene_reading.hpp"
+#include "toml_writer.hpp"
 
 #include <algorithm>
 #include <numbers>
@@ -12,11 +13,11 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
-// Every top-level key, the level's tables (item, inventory, zone, goal) included, so a `[[zones]]`
+// Every top-level key, the level's tables (item, inventory, zone, goal, hint) included, so a `[[zones]]`
 // typo is offered `zone`: one format for scenes and levels, one list.
 constexpr std::string_view kTopAndLevelKeys[] = {"name",        "description", "world",     "view", "path", "circle",
                                                  "circle_grid", "segment",     "water",     "rope", "box",  "capsule",
-                                                 "pivot",       "item",        "inventory", "zone", "goal"};
+                                                 "pivot",       "item",        "inventory", "zone", "goal", "hint"};
 constexpr std::string_view kWorldKeys[] = {"gravity",  "time_step",           "method",        "bounds",
                                            "substeps", "max_events_per_step", "resting_speed", "duration",
                                            "air_drag", "sleep_speed",         "time_to_sleep"};
@@ -211,6 +212,19 @@ std::optional<int> readPathReference(TableReader& table, SceneReading& reading) 
     return std::nullopt;
 }
 
+namespace {
+
+// The document without what the level writer writes from the SceneDesc (name, description, the
+// view and the level's tables), as TOML: the physics, which the editor does not change.
+std::string physicsTables(const toml::table& document) {
+    toml::table physics = document;
+    for (const char* key : {"name", "description", "view", "item", "inventory", "zone", "goal", "hint"})
+        physics.erase(key);
+    return tomlTables(physics);
+}
+
+} // namespace
+
 SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     Diagnostics diag(fileName);
     std::optional<toml::table> parsed = parseToml(text, fileName, diag);
@@ -254,6 +268,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
         worldTable.error(worldTable.valuePlace("method"), why);
     }
     if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    scene.physicsToml = physicsTables(document);
     if ((scene.level.isLevel() || rotating) && !namesMethod) scene.world.method = Method::automatic;
     // Nor does a scene too large for exact's pair-by-pair search (method_budget.hpp): it gets
     // "auto", which runs exact wherever exact affords the step.

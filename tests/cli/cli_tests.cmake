@@ -95,7 +95,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, check and items (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, edit, check and items (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -220,11 +220,15 @@ rube_cli_test("level balloon summary.json has the goal step, its frame and the h
 
 # `rube play` (issue 7). Without a display it says so in one line and names the ways on (exit 1);
 # bad input is found before any window is asked for (exit 2). DISPLAY is unset for all of them.
-function(rube_play_test name args exit)
-  add_test(NAME "cli: play ${name}"
+# `rube play` and `rube edit` run with DISPLAY unset.
+function(rube_windowless_test command name args exit)
+  add_test(NAME "cli: ${command} ${name}"
            COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
-                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=play|${args}" -DEXIT=${exit} ${ARGN}
+                   ${CMAKE_COMMAND} -DRUBE=$<TARGET_FILE:rube> "-DARGS=${command}|${args}" -DEXIT=${exit} ${ARGN}
                    -P ${RUBE_CLI_DIR}/rube_cli.cmake)
+endfunction()
+function(rube_play_test name args exit)
+  rube_windowless_test(play "${name}" "${args}" ${exit} ${ARGN})
 endfunction()
 rube_play_test("without a display names rube run and xvfb-run" "${RUBE_GAME_LEVELS}/ramp.toml" 1
                "-DSTDERR_LINE=rube play: no display (DISPLAY is not set): render it off-screen with 'rube run ${RUBE_GAME_LEVELS}/ramp.toml --script FILE --out DIR', or give it a virtual display with 'xvfb-run rube play ${RUBE_GAME_LEVELS}/ramp.toml'")
@@ -235,7 +239,23 @@ rube_play_test("--record into a missing folder" "${RUBE_GAME_LEVELS}/ramp.toml|-
 rube_play_test("a bad --script is reported at its place" "${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
                "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
 rube_play_test("--quit-after 0 is refused" "${RUBE_GAME_LEVELS}/ramp.toml|--quit-after|0" 2
-               "-DSTDERR_LINE=rube: --quit-after: expected a whole number of frames from 1 to 1000000000, got '0' (see 'rube play --help')")
+               "-DSTDERR_LINE=rube: --quit-after: expected a whole number of steps from 1 to 1000000000, got '0' (see 'rube play --help')")
+# Issue 23: with no LEVEL, the list of the index's levels; an index that cannot be read is one
+# line naming it, before any window is asked for; a --script needs its level.
+rube_play_test("no level and an index that is not there" "--index|${RUBE_CLI_OUT}/no-index.toml" 2
+               "-DSTDERR_LINE=${RUBE_CLI_OUT}/no-index.toml: cannot open file (no LEVEL given, so 'rube play' lists the levels of ${RUBE_CLI_OUT}/no-index.toml: give a LEVEL or --index FILE)")
+# `rube edit` (issue 23): the same checks before any window, then no display is exit 1.
+function(rube_edit_test name args exit)
+  rube_windowless_test(edit "${name}" "${args}" ${exit} ${ARGN})
+endfunction()
+rube_edit_test("without a display says so" "--out|${RUBE_CLI_OUT}/new.toml" 1
+               "-DSTDERR_LINE=rube edit: no display (DISPLAY is not set): give it a virtual display with 'xvfb-run rube edit'")
+rube_edit_test("--out not a .toml" "--out|${RUBE_CLI_OUT}/new.txt" 2
+               "-DSTDERR_LINE=rube edit: --out ${RUBE_CLI_OUT}/new.txt: a level file ends in .toml")
+rube_edit_test("a bad level is reported at its place" "${RUBE_CLI_DIR}/bad-mass.toml" 2
+               -DSTDERR_FIXTURE=${RUBE_CLI_DIR}/bad-mass.toml)
+rube_play_test("a --script without a level" "--script|${RUBE_GAME_LEVELS}/ramp.solution.toml" 2
+               "-DSTDERR_LINE=rube play: --script needs a LEVEL: the script belongs to one level")
 
 # Methods without a broadphase (discrete, turn-based, exact) refuse a scene whose pair tests exceed
 # 2^22 (issue 27: 100,000 circles under exact took 10 GB and minutes a step): status 2, one line

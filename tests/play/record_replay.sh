@@ -6,11 +6,12 @@
 set -euo pipefail
 rube=$1 levels=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
+export XDG_DATA_HOME="$work/data" # the progress file goes here, not into the user's own
 failed=0
 for solution in "$levels"/*.solution.toml; do
   name=$(basename "$solution" .solution.toml)
   level="$levels/$name.toml"
-  # 1000 frames at one step each outlast every level's goal (the latest is paddle's, 809) and
+  # 1000 steps outlast every level's goal (the latest is paddle's, 809) and
   # every solution's before_step (at most 1000).
   if ! "$rube" play "$level" --script "$solution" --run --quit-after 1000 --steps-per-frame 1 --no-vsync \
         --size 320x180 --record "$work/$name.toml" > "$work/$name.play.txt" 2>&1; then

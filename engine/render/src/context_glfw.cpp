@@ -31,6 +31,8 @@ Key toKey(int key) {
     case GLFW_KEY_DOWN: return Key::down;
     case GLFW_KEY_LEFT_BRACKET: return Key::leftBracket;
     case GLFW_KEY_RIGHT_BRACKET: return Key::rightBracket;
+    case GLFW_KEY_LEFT_CONTROL: return Key::control;
+    case GLFW_KEY_RIGHT_CONTROL: return Key::control;
     default: return Key::other;
     }
 }
@@ -154,6 +156,10 @@ private:
             self.listener_->key(toKey(key), action == GLFW_PRESS    ? KeyAction::press
                                             : action == GLFW_REPEAT ? KeyAction::repeat
                                                                     : KeyAction::release);
+        });
+        glfwSetCharCallback(window_, [](GLFWwindow* window, unsigned int codePoint) {
+            WindowContext& self = of(window);
+            if (self.listener_) self.listener_->typed(static_cast<char32_t>(codePoint));
         });
     }
 

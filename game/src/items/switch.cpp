@@ -67,6 +67,7 @@ public:
         trigger(run, item);
     }
     void trigger(LevelRun& run, int item) const override {
+        run.partState(item).pressed = true; // a click looks like a ball's press (hit() comes here too)
         const std::string& name = run.items()[static_cast<std::size_t>(item)].params.as<SwitchParams>().triggers;
         if (run.scene().findRope(name) >= 0) return run.cutRope(name);
         if (const int target = run.find(name); target >= 0)
@@ -76,7 +77,7 @@ public:
     void draw(const PartDrawing& d) const override {
         const float r = static_cast<float>(itemOf(d).params.as<SwitchParams>().radius);
         d.list.box(pt(d.run.itemPosition(d.item)), {r, 0.6f * r}, 0.0f,
-                   style(stateOf(d).hit ? "highlight" : "box", "box_outline"));
+                   style(stateOf(d).hit || stateOf(d).pressed ? "highlight" : "box", "box_outline"));
     }
 };
 

@@ -18,6 +18,7 @@ enum class Key {
     down,
     leftBracket,
     rightBracket,
+    control, ///< either Control key: the play window's Ctrl+Z and Ctrl+Y
     a,
     b,
     c,
@@ -68,6 +69,9 @@ public:
     virtual void scrolled(float notches) = 0;
     /// A key went down, repeated while held, or went up.
     virtual void key(Key key, KeyAction action) = 0;
+    /// A character was typed (a Unicode code point, after the keyboard layout), after the key()
+    /// of the key that typed it. Listeners that take no text ignore it.
+    virtual void typed(char32_t codePoint) { (void)codePoint; }
 };
 
 } // namespace rube::render

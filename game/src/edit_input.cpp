@@ -1,0 +1,347 @@
+// The editor's input: a click places the selected kind (Tab picks it) or picks up a part to move;
+// Z draws zones; [ ] and the wheel turn; right-click or Delete removes; P marks a part as the
+// player's; T makes the goal; Ctrl+Z, Ctrl+Y, Ctrl+S; Space tries the level, R or Esc comes back.
+#include "edit_session.hpp"
+
+#include "play_internal.hpp"
+#include "toml_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rube::game {
+
+namespace {
+
+using play::normalDegrees;
+using play::snap;
+using render::Key;
+using render::KeyAction;
+using render::MouseButton;
+
+constexpr double kGridPerMetre = 20.0; // 5 cm, as the play window's grid
+constexpr double kTurnStep = 15.0;     // degrees
+constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
+
+Vec2 snapped(Vec2 v) { return {snap(v.x, kGridPerMetre), snap(v.y, kGridPerMetre)}; }
+
+} // namespace
+
+void EditSession::cursorMoved(float x, float y) {
+    if (trying_) return trying_->cursorMoved(x, y);
+    cursor_ = {x, y};
+    cursorWorld_ = bar_.toWorld(cursor_);
+    if (dragging_) moveDragged();
+    if (resizing_) {
+        // The corner follows the cursor; the opposite corner stays, and the box keeps min below max.
+        Aabb& box = state_.level.level.zones[resizing_->first].box;
+        const Vec2 to = snapped(cursorWorld_);
+        const int corner = resizing_->second;
+        (corner & 1 ? box.max.x : box.min.x) = to.x;
+        (corner & 2 ? box.max.y : box.min.y) = to.y;
+        if (box.min.x > box.max.x) {
+            std::swap(box.min.x, box.max.x);
+            resizing_->second ^= 1;
+        }
+        if (box.min.y > box.max.y) {
+            std::swap(box.min.y, box.max.y);
+            resizing_->second ^= 2;
+        }
+    }
+}
+
+std::optional<std::pair<std::size_t, int>> EditSession::zoneCornerAtCursor() const {
+    const float ppm = bar_.windowCamera().pixelsPerMetre(bar_.windowSize());
+    const double reach = 8.0 / ppm;
+    const std::vector<Zone>& zones = state_.level.level.zones;
+    for (std::size_t z = zones.size(); z-- > 0;)
+        for (int corner = 0; corner < 4; ++corner) {
+            const Vec2 at{corner & 1 ? zones[z].box.max.x : zones[z].box.min.x,
+                          corner & 2 ? zones[z].box.max.y : zones[z].box.min.y};
+            if (cursorWorld_.distance(at) <= reach) return std::pair{z, corner};
+        }
+    return std::nullopt;
+}
+
+void EditSession::changeSpare(int by) {
+    const std::string kind(selectedKind()->name());
+    if (!selectedKind()->placeable()) return say("a " + kind + " cannot be in the inventory", "magnet");
+    const int now = state_.spare.count(kind) ? state_.spare.at(kind) : 0;
+    if (now + by < 0) return say("no spare " + kind + " to take away", "magnet");
+    edit();
+    if (now + by == 0) state_.spare.erase(kind);
+    else state_.spare[kind] = now + by;
+    const auto stock = inventory();
+    say("inventory: " + kind + " x" + std::to_string(stock.count(kind) ? stock.at(kind) : 0) + " (" +
+        std::to_string(now + by) + " spare beyond the player's parts)");
+}
+
+void EditSession::moveDragged() {
+    const Vec2 to = snapped(cursorWorld_ + dragOffset_);
+    if (dragging_->what == Hit::What::item) state_.level.level.items[dragging_->index].position = to;
+    else state_.players[dragging_->index].position = to;
+}
+
+void EditSession::mouseButton(MouseButton button, bool pressed) {
+    if (trying_) return trying_->mouseButton(button, pressed);
+    if (button == MouseButton::right && pressed) return removeAtCursor();
+    if (button != MouseButton::left) return;
+    if (!pressed) {
+        if (zoneStart_) {
+            const Vec2 end = snapped(cursorWorld_);
+            const Aabb box{{std::min(zoneStart_->x, end.x), std::min(zoneStart_->y, end.y)},
+                           {std::max(zoneStart_->x, end.x), std::max(zoneStart_->y, end.y)}};
+            zoneStart_.reset();
+            if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
+                edit();
+                state_.level.level.zones.push_back({box, {}});
+                say("zone " + formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y));
+            }
+        }
+        dragging_.reset();
+        resizing_.reset();
+        return;
+    }
+    if (bar_.contains(cursor_)) return;
+    if (zoneMode_) {
+        // On a zone's corner, a drag resizes the zone; elsewhere it draws a new one.
+        if ((resizing_ = zoneCornerAtCursor())) edit();
+        else zoneStart_ = snapped(cursorWorld_);
+        return;
+    }
+    const Hit hit = hitAtCursor();
+    edit();
+    if (hit.what == Hit::What::item || hit.what == Hit::What::player) {
+        const Vec2 at = hit.what == Hit::What::item ? state_.level.level.items[hit.index].position
+                                                    : state_.players[hit.index].position;
+        dragging_ = hit;
+        dragOffset_ = at - cursorWorld_;
+        return;
+    }
+    ItemDesc item = defaultItem(selectedKind(), snapped(cursorWorld_));
+    item.name = nameFor(selectedKind());
+    state_.level.level.items.push_back(item);
+    dragging_ = Hit{Hit::What::item, state_.level.level.items.size() - 1};
+    dragOffset_ = {};
+    say("placed " + item.name + " at " + formatPair(item.position.x, item.position.y) +
+        " (P: the player's, T: the goal)");
+}
+
+void EditSession::typed(char32_t codePoint) {
+    if (trying_ || !hintDraft_) return;
+    if (skipTyped_) {
+        skipTyped_ = false;
+        if (codePoint == U'h' || codePoint == U'H') return;
+    }
+    // The HUD's font draws printable ASCII only.
+    if (codePoint < 32 || codePoint > 126) return;
+    *hintDraft_ += static_cast<char>(codePoint);
+    say("hint: " + *hintDraft_ + "_");
+}
+
+void EditSession::scrolled(float notches) {
+    if (trying_) return trying_->scrolled(notches);
+    if (const int clicks = static_cast<int>(std::lround(notches)); clicks != 0) turnAtCursor(clicks * kTurnStep);
+}
+
+void EditSession::turnAtCursor(double degrees) {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item && hit.what != Hit::What::player) return;
+    edit();
+    if (hit.what == Hit::What::player) {
+        Placement& p = state_.players[hit.index];
+        p.angleDegrees = normalDegrees(p.angleDegrees + degrees);
+        p.angle = scriptRadians(p.angleDegrees);
+        return say(std::string(p.kind->name()) + " turned to " + play::number(p.angleDegrees) + " degrees");
+    }
+    ItemDesc& item = state_.level.level.items[hit.index];
+    const double now = item.angleDegrees.value_or(item.angle * 180.0 / std::numbers::pi);
+    item.angleDegrees = normalDegrees(play::snap(now, 2.0) + degrees);
+    item.angle = *item.angleDegrees * std::numbers::pi / 180.0; // as the level reader converts
+    say(item.name + " turned to " + play::number(*item.angleDegrees) + " degrees");
+}
+
+void EditSession::removeAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what == Hit::What::none) return;
+    edit();
+    LevelDesc& level = state_.level.level;
+    if (hit.what == Hit::What::player) {
+        state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    } else if (hit.what == Hit::What::zone) {
+        level.zones.erase(level.zones.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    } else {
+        if (level.goal && level.goal->item == level.items[hit.index].name) level.goal.reset();
+        level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    }
+    say("removed");
+}
+
+void EditSession::markAtCursor() {
+    const Hit hit = hitAtCursor();
+    LevelDesc& level = state_.level.level;
+    if (hit.what == Hit::What::player) {
+        edit();
+        const Placement p = state_.players[hit.index];
+        state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
+        ItemDesc item = placedItem(p);
+        item.name = nameFor(p.kind);
+        item.angleDegrees = p.angleDegrees;
+        level.items.push_back(item);
+        return say(item.name + " is a fixed part again");
+    }
+    if (hit.what != Hit::What::item) return;
+    const ItemDesc& item = level.items[hit.index];
+    if (!item.kind->placeable())
+        return say("a " + std::string(item.kind->name()) + " cannot be placed by the player", "magnet");
+    edit();
+    Placement p;
+    p.kind = item.kind;
+    p.position = item.position;
+    p.angleDegrees = item.angleDegrees.value_or(0.0);
+    p.angle = scriptRadians(p.angleDegrees);
+    p.name = item.name;
+    state_.players.push_back(p);
+    if (level.goal && level.goal->item == item.name) level.goal.reset();
+    level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
+}
+
+// L on a switch: its `triggers` goes to the next item it may trigger (or named rope), in level order.
+void EditSession::linkAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item || !state_.level.level.items[hit.index].kind->plays(PartRole::toggle) ||
+        !std::any_of(state_.level.level.items[hit.index].kind->keys().begin(),
+                     state_.level.level.items[hit.index].kind->keys().end(),
+                     [](const PartKey& key) { return key.key == "triggers"; }))
+        return say("L: point at a switch", "magnet");
+    std::vector<std::string> names;
+    for (const ItemDesc& item : state_.level.level.items)
+        if (item.kind->plays(PartRole::triggered) && !item.name.empty()) names.push_back(item.name);
+    for (const std::string& rope : state_.level.ropeNames)
+        if (!rope.empty()) names.push_back(rope);
+    if (names.empty())
+        return say("L: nothing a switch can trigger yet (a cannon, bomb, fan, magnet, rocket or rope)", "magnet");
+    ItemDesc& item = state_.level.level.items[hit.index];
+    const auto now = std::find_if(item.ownLines.begin(), item.ownLines.end(),
+                                  [](const std::string& line) { return line.starts_with("triggers = "); });
+    std::size_t next = 0;
+    if (now != item.ownLines.end())
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (*now == "triggers = " + tomlQuoted(names[i])) next = (i + 1) % names.size();
+    edit();
+    // The switch's own parameters are read when the level is saved or tried: its line is what counts.
+    std::erase_if(item.ownLines, [](const std::string& line) { return line.starts_with("triggers = "); });
+    state_.level.level.items[hit.index].ownLines.push_back("triggers = " + tomlQuoted(names[next]));
+    say(item.name + " triggers " + names[next]);
+}
+
+void EditSession::goalAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
+    const ItemDesc& item = state_.level.level.items[hit.index];
+    Goal goal;
+    goal.timeLimit = state_.level.level.goal ? state_.level.level.goal->timeLimit : std::optional<double>(10.0);
+    goal.item = item.name;
+    if (item.kind->plays(PartRole::goalTarget)) {
+        goal.kind = GoalKind::targetHit;
+        goal.text = "hit the " + item.name;
+    } else if (item.kind->plays(PartRole::goalBucket)) {
+        goal.kind = GoalKind::ballInBucket;
+        goal.text = "get a ball into the " + item.name;
+    } else {
+        return say("T: a " + std::string(item.kind->name()) + " cannot be a goal", "magnet");
+    }
+    edit();
+    state_.level.level.goal = goal;
+    say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+}
+
+void EditSession::key(Key key, KeyAction action) {
+    if (key == Key::control) control_ = action != KeyAction::release;
+    if (trying_) {
+        if ((key == Key::r || key == Key::escape) && action == KeyAction::press) {
+            trying_.reset();
+            return say("back to editing");
+        }
+        return trying_->key(key, action);
+    }
+    if (action == KeyAction::release) return;
+    if (hintDraft_) {
+        // Typing a hint: only these keys act; the rest type (typed()).
+        if (key == Key::enter && action == KeyAction::press) {
+            if (!hintDraft_->empty()) {
+                edit();
+                state_.level.level.hints.push_back({*hintDraft_, {}});
+                say("hint " + std::to_string(state_.level.level.hints.size()) + " kept: " + *hintDraft_);
+            }
+            hintDraft_.reset();
+        } else if (key == Key::escape && action == KeyAction::press) {
+            hintDraft_.reset();
+            say("no hint");
+        } else if (key == Key::backspace && !hintDraft_->empty()) {
+            hintDraft_->pop_back();
+            say("hint: " + *hintDraft_ + "_");
+        }
+        return;
+    }
+    if (key == Key::leftBracket || key == Key::rightBracket)
+        return turnAtCursor(key == Key::leftBracket ? kTurnStep : -kTurnStep);
+    if (action == KeyAction::repeat) return;
+    switch (key) {
+    case Key::tab:
+        selected_ = (selected_ + 1) % allPartKinds().size();
+        say("click to place a " + std::string(selectedKind()->name()) + "; Tab picks another kind");
+        break;
+    case Key::z:
+        if (control_ && history_.undo(state_)) {
+            refreshCamera();
+            say("undone");
+        } else if (!control_) {
+            zoneMode_ = !zoneMode_;
+            say(zoneMode_ ? "zones: drag to draw a placement zone, Z again to place parts" : "placing parts");
+        }
+        break;
+    case Key::y:
+        if (control_ && history_.redo(state_)) {
+            refreshCamera();
+            say("redone");
+        }
+        break;
+    case Key::s:
+        if (control_) save();
+        break;
+    case Key::up:
+    case Key::down:
+        if (!state_.level.level.goal) {
+            say("T sets a goal first; then Up and Down set its time limit", "magnet");
+            break;
+        }
+        edit();
+        {
+            Goal& goal = *state_.level.level.goal;
+            goal.timeLimit = std::max(1.0, std::round(goal.timeLimit.value_or(10.0)) + (key == Key::up ? 1.0 : -1.0));
+            say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+        }
+        break;
+    case Key::v: fitView(); break;
+    case Key::l: linkAtCursor(); break;
+    case Key::h:
+        hintDraft_ = std::string();
+        skipTyped_ = true;
+        say("hint: _  (type it; Enter keeps it, Esc drops it)");
+        break;
+    case Key::i: changeSpare(1); break;
+    case Key::k: changeSpare(-1); break;
+    case Key::p: markAtCursor(); break;
+    case Key::t: goalAtCursor(); break;
+    case Key::deleteKey:
+    case Key::backspace: removeAtCursor(); break;
+    case Key::space: tryIt(); break;
+    case Key::escape: quit_ = true; break;
+    default: break;
+    }
+}
+
+} // namespace rube::game

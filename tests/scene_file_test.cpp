@@ -48,9 +48,10 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 } // namespace
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
-    const std::set<std::string> expected = {"ball-stack", "blocks",         "bounce",        "bullet",    "float",
-                                            "islands",    "newtons-cradle", "pendulum",      "pile",      "pool-break",
-                                            "projectile", "rolling",        "seesaw-domino", "slope-rest"};
+    const std::set<std::string> expected = {
+        "ball-stack", "blocks", "bounce",     "bullet",     "float",   "islands",       "newtons-cradle",
+        "pendulum",   "pile",   "pool-break", "projectile", "rolling", "seesaw-domino", "slope-rest",
+        "gears",      "belt",   "pulley",     "springs",    "piston",  "weld",          "chain"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;

@@ -1,7 +1,7 @@
 // Joints that make machines go, each against its formula at 60 Hz under the solver (issue 21):
 // gears (angle1 + ratio angle2 constant), belts (same sense, ratio of radii), pulleys (the Atwood
 // machine's a = g (m2 - m1) / (m1 + m2), the rope's length, a slack rope) and motors (target speed,
-// alpha <= tau_max / I). Which methods carry joints: the solver, auto (which gives their world to
+// alpha <= tau_max / I). Which methods carry joints: the solver, auto (which gives their islands to
 // it); the others refuse.
 #include "joint_test_world.hpp"
 
@@ -199,11 +199,55 @@ TEST_CASE("joints: the solver and auto carry joints; discrete, turn-based and ex
         hinge(world, wheel(world, {0.0, 0.0}, 0.5, 1.0), {0.0, 0.0}, 1.0, 1.0);
         CHECK_THROWS_AS(world.step(), std::logic_error);
     }
-    // auto gives a jointed world to the solver: the same steps, bit for bit.
+    // auto gives a wholly jointed world to the solver: the same steps, bit for bit.
     const GearRun solver = runGear(2.5, true, Method::solver, 2.0),
                   automatic = runGear(2.5, true, Method::automatic, 2.0);
     CHECK(solver.turned == automatic.turned);
     CHECK(solver.worstError == automatic.worstError);
+}
+
+TEST_CASE("joints: auto hands a jointed island to the solver and runs a far ball exactly", "[joints]") {
+    // A ball bouncing on its own floor far from a motor-driven gear pair: under auto the ball is the
+    // exact method's, step for step bit-identical to the ball alone under exact; the gears the solver's.
+    const auto addBall = [](World& world) {
+        SegmentDef floor;
+        floor.a = {40.0, 0.0};
+        floor.b = {60.0, 0.0};
+        world.addSegment(floor);
+        CircleDef ball;
+        ball.position = {50.0, 3.0};
+        ball.velocity = {1.0, 0.0};
+        ball.radius = 0.25;
+        return world.addCircle(ball);
+    };
+    World alone = jointWorld({0.0, -9.81}, Method::exact);
+    const CircleId lone = addBall(alone);
+    World machine = jointWorld({0.0, -9.81}, Method::automatic);
+    const CircleId ball = addBall(machine);
+    const JointEnd w1 = wheel(machine, {0.0, 0.0}, 0.5, 1.0), w2 = wheel(machine, {2.0, 0.0}, 1.5, 1.0);
+    const JointId j1 = hinge(machine, w1, {0.0, 0.0}, 3.0, 50.0), j2 = hinge(machine, w2, {2.0, 0.0});
+    JointDef gear;
+    gear.kind = JointKind::gear;
+    gear.jointA = j1;
+    gear.jointB = j2;
+    gear.ratio = 3.0;
+    machine.addJoint(gear);
+    int bounces = 0;
+    double worstGear = 0.0;
+    for (int s = 0; s < 300; ++s) {
+        alone.step();
+        machine.step();
+        bounces += static_cast<int>(alone.lastImpacts().size());
+        REQUIRE(machine.circle(ball).position.x == alone.circle(lone).position.x);
+        REQUIRE(machine.circle(ball).position.y == alone.circle(lone).position.y);
+        REQUIRE(machine.circle(ball).velocity.y == alone.circle(lone).velocity.y);
+        worstGear = std::max(worstGear, std::abs(machine.jointCoordinate(j2) + machine.jointCoordinate(j1) / 3.0));
+    }
+    CHECK(bounces >= 2);
+    CHECK(worstGear < 1e-6);
+    CHECK(machine.jointCoordinate(j1) > 10.0);
+    CHECK(machine.stats().exactBodySteps > 0);
+    CHECK(machine.stats().solverBodySteps > 0);
 }
 
 TEST_CASE("joints: handles: removing a body removes its joints and the gears on them", "[joints]") {

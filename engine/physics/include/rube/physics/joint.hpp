@@ -7,7 +7,8 @@
 /// radii's ratio turning both wheels the same way.
 ///
 /// Which methods carry them: the solver (substepped, soft as Box2D v3's joints, springs integrated
-/// as forces by velocity Verlet), and auto, which gives a world with joints to the solver.
+/// as forces by velocity Verlet), and auto, which gives every island with a jointed body to the
+/// solver (a joint's ends share an island).
 /// discrete, turn-based and exact refuse a world with joints (World::step throws), as they refuse
 /// turning bodies. See engine/physics/ARCHITECTURE.md ("Joints").
 

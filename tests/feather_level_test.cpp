@@ -29,12 +29,12 @@ std::vector<Placement> ramp(Vec2 centre, double degrees) {
 }
 
 // Plays the level for its time limit with these placements; the goal frame, if reached.
-std::optional<std::int64_t> goalFrame(const SceneDesc& level, const std::vector<Placement>& placements) {
+std::optional<std::int64_t> goalStep(const SceneDesc& level, const std::vector<Placement>& placements) {
     REQUIRE_FALSE(checkPlacements(level, placements));
     LevelRun run(level, placements);
     const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
-    for (std::int64_t i = 0; i < steps && !run.goalFrame(); ++i) run.step();
-    return run.goalFrame();
+    for (std::int64_t i = 0; i < steps && !run.goalStep(); ++i) run.step();
+    return run.goalStep();
 }
 
 SceneDesc withoutAir(SceneDesc level) {
@@ -87,18 +87,18 @@ TEST_CASE("feather: the thrown ball follows the exact solution under drag and si
 
 TEST_CASE("feather: the ramp under the drift's end slides the ball into the bucket", "[level][fields][drag]") {
     const SceneDesc level = loadFeather();
-    CHECK(goalFrame(level, ramp({-2.6, 2.0}, -25.0)));
+    CHECK(goalStep(level, ramp({-2.6, 2.0}, -25.0)));
 }
 
 TEST_CASE("feather: what would work in still air fails in the level's air", "[level][fields][drag]") {
     const SceneDesc level = loadFeather();
     // Nothing placed: without air the throw lands in the bucket by itself; in the air it sinks 2 m short.
-    CHECK(goalFrame(withoutAir(level), {}));
-    CHECK_FALSE(goalFrame(level, {}));
+    CHECK(goalStep(withoutAir(level), {}));
+    CHECK_FALSE(goalStep(level, {}));
     // A chute where the throw would come down in still air: the drifting ball falls behind it.
     const auto chute = ramp({-2.2, 3.4}, -40.0);
-    CHECK(goalFrame(withoutAir(level), chute));
-    CHECK_FALSE(goalFrame(level, chute));
+    CHECK(goalStep(withoutAir(level), chute));
+    CHECK_FALSE(goalStep(level, chute));
     // The ramp tilted the other way carries the caught ball away from the bucket.
-    CHECK_FALSE(goalFrame(level, ramp({-2.6, 2.0}, 25.0)));
+    CHECK_FALSE(goalStep(level, ramp({-2.6, 2.0}, 25.0)));
 }

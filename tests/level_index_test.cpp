@@ -18,6 +18,12 @@ std::string firstError(const LevelIndexLoad& load) {
     return load.errors.front().format();
 }
 
+bool anyError(const LevelIndexLoad& load, const std::string& text) {
+    for (const SceneError& e : load.errors)
+        if (e.format() == text) return true;
+    return false;
+}
+
 } // namespace
 
 TEST_CASE("the level index lists every shipped level exactly once", "[index]") {
@@ -57,7 +63,6 @@ TEST_CASE("the level index reports bad entries at their place", "[index]") {
     CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"a\"\ndifficulty = 1\n"
                                      "[[level]]\nfile = \"ramp.toml\"\ntitle = \"b\"\ndifficulty = 1\n",
                                      "i.toml", kLevels)) == "i.toml:6:8: 'ramp.toml' is listed already, at line 1");
-    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml",
-                                     kLevels))
-              .find("unknown key 'titel' in [[level]] (did you mean 'title'?)") != std::string::npos);
+    CHECK(anyError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml", kLevels),
+                   "i.toml:3:1: unknown key 'titel' in [[level]] (did you mean 'title'?)"));
 }

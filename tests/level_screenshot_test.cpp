@@ -33,9 +33,9 @@ render::Renderer& renderer() {
 
 void check(const LevelRun& run, const LevelView& view, const std::string& level) {
     render::DrawList list;
-    view.draw(run, run.frame(), list);
+    view.draw(run, run.steps(), list);
     const auto golden = std::filesystem::path(RUBE_SCREENSHOTS_DIR) /
-                        render::goldenFileName(level, static_cast<int>(run.frame()));
+                        render::goldenFileName(level, static_cast<int>(run.steps()));
     const render::ScreenshotCheck result = render::checkScreenshot(renderer().render(list, view.camera()), golden,
                                                                    RUBE_SCREENSHOT_FAILURES_DIR);
     INFO(result.message);
@@ -53,16 +53,16 @@ void checkLevel(const std::string& name) {
     const LevelView view(name, sceneCamera(frameScene(*load.scene, run.world()), kFrameSize), kFrameSize);
     std::size_t next = 0;
     const auto act = [&] {
-        for (; next < script.script->actions.size() && script.script->actions[next].frame == run.frame(); ++next)
+        for (; next < script.script->actions.size() && script.script->actions[next].step == run.steps(); ++next)
             REQUIRE(takeAction(script.script->actions[next], run).empty());
     };
     act();
     check(run, view, name);
-    for (int i = 0; i < 5000 && !run.goalFrame(); ++i) {
+    for (int i = 0; i < 5000 && !run.goalStep(); ++i) {
         run.step();
         act();
     }
-    REQUIRE(run.goalFrame());
+    REQUIRE(run.goalStep());
     check(run, view, name);
 }
 

@@ -45,7 +45,7 @@ LevelRun play(const SceneDesc& level, const ScriptDesc& script, std::int64_t ste
     LevelRun run(level, script.placements);
     std::size_t next = 0;
     for (std::int64_t i = 0; i < steps; ++i) {
-        for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
+        for (; next < script.actions.size() && script.actions[next].step == i; ++next)
             REQUIRE(takeAction(script.actions[next], run).empty());
         run.step();
     }
@@ -78,9 +78,79 @@ TEST_CASE("each level's solution reaches the goal, and the level as it stands do
         REQUIRE(script.script);
         REQUIRE(level.level.goal->timeLimit);
         const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
-        CHECK(play(level, *script.script, steps).goalFrame().has_value());
-        CHECK_FALSE(play(level, ScriptDesc{}, steps).goalFrame().has_value());
+        CHECK(play(level, *script.script, steps).goalStep().has_value());
+        CHECK_FALSE(play(level, ScriptDesc{}, steps).goalStep().has_value());
     }
+}
+
+// Issue 23: the goal event says where the goal happened and what did it. For a target goal, the hit
+// that completed it: its point of impact (on the target's surface, within a radius of its centre)
+// and the ball that struck; for a bucket, the ball resting in it. It was [0, 0] and nobody.
+TEST_CASE("each level's goal event is where the goal happened, by what did it", "[level]") {
+    int byNamed = 0;
+    for (const std::string& name : solvedLevels()) {
+        INFO(name);
+        const SceneDesc level = loadLevel(name);
+        const ScriptLoad script = loadScriptFile(
+            std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (name + ".solution.toml"), level);
+        REQUIRE(script.script);
+        const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
+        const LevelRun run = play(level, *script.script, steps);
+        REQUIRE(run.goalStep());
+        const GameEvent& goal = *std::find_if(run.events().begin(), run.events().end(),
+                                              [](const GameEvent& e) { return e.kind == EventKind::goal; });
+        CHECK(goal.step == *run.goalStep());
+        if (level.level.goal->kind == GoalKind::ballInBucket) {
+            const ItemDesc& bucket = run.items()[static_cast<std::size_t>(run.find(level.level.goal->item))];
+            CHECK(bucket.kind->holds(bucket, goal.position));
+        } else {
+            // The latest hit on a goal target, at the goal's step, is the one the goal repeats.
+            const auto hit = std::find_if(run.events().rbegin(), run.events().rend(), [&](const GameEvent& e) {
+                return e.kind == EventKind::hit && e.step == goal.step;
+            });
+            REQUIRE(hit != run.events().rend());
+            CHECK(goal.position == hit->position);
+            CHECK(goal.by == hit->by);
+            // On the target's surface, for a target that stays put (a moving one has moved on since).
+            const int target = run.find(hit->item);
+            const double radius = run.world().circle(run.states()[static_cast<std::size_t>(target)].circle).radius;
+            if (run.itemVelocity(target) == Vec2{})
+                CHECK((goal.position - run.itemPosition(target)).length() <= radius * 1.01);
+        }
+        if (!goal.by.empty()) ++byNamed;
+        // What the levels' own words say did it.
+        if (name == "balloon") CHECK(goal.by == "gun");       // the cannon's shot
+        if (name == "crates") CHECK(goal.by == "last-crate"); // a [[box]], knocked onto the flag
+    }
+    CHECK(byNamed >= 3);
+}
+
+TEST_CASE("a hit names the ball that struck: an item, a placement, a cannon's shot", "[level]") {
+    const SceneDesc level = parseLevel(
+        "name = \"who\"\n[world]\ntime_step = 0.01\n[[segment]]\na = [-8, 0]\nb = [8, 0]\n"
+        "[[item]]\nkind = \"heavy\"\nname = \"red\"\nposition = [0, 3]\n"
+        "[[item]]\nkind = \"target\"\nname = \"flag\"\nposition = [0, 0.35]\n"
+        "[[item]]\nkind = \"target\"\nname = \"far\"\nposition = [4, 0.35]\n"
+        "[[item]]\nkind = \"target\"\nname = \"high\"\nposition = [-4, 2.5]\n"
+        "[[item]]\nkind = \"cannon\"\nname = \"gun\"\nposition = [-6, 1]\n");
+    Placement blue;
+    blue.kind = partKind("bouncy");
+    blue.position = {4.0, 3.0};
+    blue.name = "blue";
+    LevelRun run(level, {blue});
+    const std::string aimed = run.aimAtItem(run.find("gun"), run.find("high"), false);
+    INFO(aimed);
+    REQUIRE(aimed.empty());
+    run.fire(run.find("gun"));
+    for (int i = 0; i < 200; ++i) run.step();
+    const auto byOf = [&](const std::string& item) {
+        for (const GameEvent& e : run.events())
+            if (e.kind == EventKind::hit && e.item == item) return e.by;
+        return std::string("no hit");
+    };
+    CHECK(byOf("flag") == "red");
+    CHECK(byOf("far") == "blue");
+    CHECK(byOf("high") == "gun");
 }
 
 TEST_CASE("level errors are file:line:col messages", "[level]") {
@@ -178,8 +248,8 @@ TEST_CASE("a led shot hits a target moving at constant velocity", "[level][aim]"
         for (int i = 0; i < fireAt; ++i) run.step();
         REQUIRE(run.aimAtItem(run.find("gun"), run.find("runner"), false).empty());
         run.fire(run.find("gun"));
-        for (int i = 0; i < 300 && !run.goalFrame(); ++i) run.step();
-        CHECK(run.goalFrame().has_value());
+        for (int i = 0; i < 300 && !run.goalStep(); ++i) run.step();
+        CHECK(run.goalStep().has_value());
     }
 }
 
@@ -211,8 +281,8 @@ TEST_CASE("the bucket goal needs a ball resting inside it for half a second", "[
         SceneDesc moving = level;
         moving.level.items[1].params.as<parts::BallParams>().velocity = {vx, 0.0};
         LevelRun run(moving, {});
-        for (int i = 0; i < 300 && !run.goalFrame(); ++i) run.step();
-        return run.goalFrame();
+        for (int i = 0; i < 300 && !run.goalStep(); ++i) run.step();
+        return run.goalStep();
     };
     // Dropped straight in, it lands after sqrt(2 x 2.6 / 9.81) = 0.73 s and counts 0.5 s later.
     const auto frame = settle(0.0);
@@ -229,7 +299,7 @@ TEST_CASE("trampoline: the heavy ball dropped where the bouncy one goes does not
     REQUIRE_FALSE(checkPlacements(level, heavy));
     LevelRun run(level, heavy);
     for (int i = 0; i < 800; ++i) run.step();
-    CHECK_FALSE(run.goalFrame());
+    CHECK_FALSE(run.goalStep());
 }
 
 TEST_CASE("magnet: it pulls steel only, the same ball made of rubber slides on under the bell", "[level][fields]") {
@@ -239,7 +309,7 @@ TEST_CASE("magnet: it pulls steel only, the same ball made of rubber slides on u
     const auto reached = [&](const SceneDesc& scene) {
         LevelRun run(scene, magnet);
         for (int i = 0; i < 1000; ++i) run.step();
-        return run.goalFrame().has_value();
+        return run.goalStep().has_value();
     };
     CHECK(reached(level));
     level.level.items.front().kind = partKind("bouncy"); // same start, not magnetic
@@ -259,9 +329,9 @@ TEST_CASE("fan: a toggle turns it off and on again", "[level][fields]") {
         return run;
     };
     const LevelRun off = play(1);
-    CHECK_FALSE(off.goalFrame());
+    CHECK_FALSE(off.goalStep());
     CHECK(off.world().circles()[0].position.x < 0.0); // it never crossed the wall
-    CHECK(play(2).goalFrame());
+    CHECK(play(2).goalStep());
 }
 
 TEST_CASE("fan: the heavy ball dropped in the same air is not lifted over the wall", "[level][fields]") {
@@ -270,7 +340,7 @@ TEST_CASE("fan: the heavy ball dropped in the same air is not lifted over the wa
     level.level.items.front().kind = partKind("heavy");
     LevelRun run(level, fan);
     for (int i = 0; i < 1200; ++i) run.step();
-    CHECK_FALSE(run.goalFrame());
+    CHECK_FALSE(run.goalStep());
     CHECK(run.world().circles()[0].position.x < 0.0); // still behind the wall
 }
 
@@ -284,15 +354,15 @@ TEST_CASE("fire-when times a fixed-angle shot so that it hits a moving target", 
     };
     // The barrel stays at the level's 45 degrees: only the moment of firing is chosen.
     const LevelRun timed = playScript(
-        "[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n");
-    REQUIRE(timed.goalFrame());
+        "[[action]]\nstep = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n");
+    REQUIRE(timed.goalStep());
     REQUIRE(timed.events().front().kind == EventKind::shot);
-    CHECK(timed.events().front().frame > 100); // it waited for the runner to come near the arc
+    CHECK(timed.events().front().step > 100); // it waited for the runner to come near the arc
     CHECK(timed.states()[static_cast<std::size_t>(timed.find("gun"))].aim == Approx(std::numbers::pi / 4));
     // Fired at once along the same aim, the shot misses: the timing is what hits.
-    CHECK_FALSE(playScript("[[action]]\nframe = 0\ndo = \"fire\"\nitem = \"gun\"\n").goalFrame());
+    CHECK_FALSE(playScript("[[action]]\nstep = 0\ndo = \"fire\"\nitem = \"gun\"\n").goalStep());
     // Fired from the next frames too, the timing still finds the runner.
-    CHECK(playScript("[[action]]\nframe = 90\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n").goalFrame());
+    CHECK(playScript("[[action]]\nstep = 90\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\n").goalStep());
     // Aimed level and away from it, no timing can meet the runner: a reason, not a shot.
     LevelRun run(level, {});
     run.aim(run.find("gun"), std::numbers::pi);
@@ -307,14 +377,14 @@ TEST_CASE("fire-when names a cannon and a target", "[level]") {
         const ScriptLoad load = parseScript("level = \"moving-target\"\n" + text, "s.toml", level);
         return load.errors.empty() ? std::string("no error") : load.errors.front().format();
     };
-    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\n") ==
+    CHECK(firstScriptError("[[action]]\nstep = 0\ndo = \"fire-when\"\nitem = \"gun\"\n") ==
           "s.toml:2:1: missing required key 'target' in [[action]]");
-    CHECK(firstScriptError("[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runer\"\n") ==
+    CHECK(firstScriptError("[[action]]\nstep = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runer\"\n") ==
           "s.toml:6:10: unknown target, bomb, switch or bucket 'runer' in level 'moving-target' (did you mean "
           "'runner'?)");
     CHECK(firstScriptError(
-              "[[action]]\nframe = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
-          "s.toml:7:1: unknown key 'arc' in [[action]] (known keys: frame, do, item, target)");
+              "[[action]]\nstep = 0\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"runner\"\narc = \"high\"\n") ==
+          "s.toml:7:1: unknown key 'arc' in [[action]] (known keys: step, do, item, target)");
 }
 
 TEST_CASE("levels and scripts word a bad reference alike", "[level]") {
@@ -329,11 +399,11 @@ TEST_CASE("levels and scripts word a bad reference alike", "[level]") {
         const ScriptLoad load = parseScript("level = \"moving-target\"\n" + text, "s.toml", level);
         return load.errors.empty() ? std::string("no error") : load.errors.front().format();
     };
-    CHECK(scriptError("[[action]]\nframe = 0\ndo = \"fire\"\nitem = \"runner\"\n") ==
+    CHECK(scriptError("[[action]]\nstep = 0\ndo = \"fire\"\nitem = \"runner\"\n") ==
           "s.toml:5:8: item 'runner' is a target, not a cannon (the level has: gun)");
-    CHECK(scriptError("[[expect]]\nexplosion = \"gun\"\nbefore_frame = 9\n") ==
+    CHECK(scriptError("[[expect]]\nexplosion = \"gun\"\nbefore_step = 9\n") ==
           "s.toml:3:13: explosion 'gun' is a cannon, not a bomb (the level has no bomb)");
-    CHECK(scriptError("[[expect]]\nhit = \"runnr\"\nbefore_frame = 9\n") ==
+    CHECK(scriptError("[[expect]]\nhit = \"runnr\"\nbefore_step = 9\n") ==
           "s.toml:3:7: unknown target or switch 'runnr' in level 'moving-target' (did you mean 'runner'?)");
 }
 
@@ -347,10 +417,10 @@ TEST_CASE("rope: the switch cuts the rope, too early or too late and the ball mi
         return run;
     };
     const LevelRun solved = playFrom(5.2);
-    CHECK(solved.goalFrame());
+    CHECK(solved.goalStep());
     CHECK(solved.world().ropes()[0].cut);
-    CHECK_FALSE(playFrom(3.0).goalFrame()); // cut on the way down: it falls short
-    CHECK_FALSE(playFrom(8.0).goalFrame()); // cut on the way up: it flies over
+    CHECK_FALSE(playFrom(3.0).goalStep()); // cut on the way down: it falls short
+    CHECK_FALSE(playFrom(8.0).goalStep()); // cut on the way up: it flies over
     // Nothing placed: the rope holds and the ball swings on, always exactly L from the anchor.
     LevelRun idle(level, {});
     double worst = 0.0;
@@ -364,13 +434,13 @@ TEST_CASE("rope: the switch cuts the rope, too early or too late and the ball mi
 
 TEST_CASE("rope: a script cuts a rope by name, an unknown rope is an error at its place", "[level][rope]") {
     const SceneDesc level = loadLevel("rope");
-    const ScriptLoad ok = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rope\"\n",
+    const ScriptLoad ok = parseScript("level = \"rope\"\n[[action]]\nstep = 54\ndo = \"cut\"\nitem = \"rope\"\n",
                                       "s.toml", level);
     REQUIRE(ok.script);
     LevelRun run = play(level, *ok.script, 480);
     CHECK(run.world().ropes()[0].cut);
-    CHECK(run.goalFrame()); // cut at the same moment the switch would: the same throw
-    const ScriptLoad bad = parseScript("level = \"rope\"\n[[action]]\nframe = 54\ndo = \"cut\"\nitem = \"rpoe\"\n",
+    CHECK(run.goalStep()); // cut at the same moment the switch would: the same throw
+    const ScriptLoad bad = parseScript("level = \"rope\"\n[[action]]\nstep = 54\ndo = \"cut\"\nitem = \"rpoe\"\n",
                                        "s.toml", level);
     REQUIRE(bad.errors.size() == 1);
     CHECK(bad.errors[0].format() == "s.toml:5:8: unknown rope 'rpoe' in level 'rope' (did you mean 'rope'?)");
@@ -398,12 +468,12 @@ TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never
     };
     SceneDesc level = loadLevel("paddle");
     REQUIRE_FALSE(checkPlacements(level, placed(-15.0)));
-    CHECK(run(level, placed(-15.0)).goalFrame());
-    CHECK_FALSE(run(level, placed(-40.0)).goalFrame()); // the wheel shoots past the paddle's lip side
+    CHECK(run(level, placed(-15.0)).goalStep());
+    CHECK_FALSE(run(level, placed(-40.0)).goalStep()); // the wheel shoots past the paddle's lip side
     // The same paddle held at rest: the wheel lies on it and never reaches the flag.
     for (NamedPath& path : level.paths)
         for (PathKey& key : path.path.keys) key.angle = 8.0 * std::numbers::pi / 180.0;
-    CHECK_FALSE(run(level, placed(-15.0)).goalFrame());
+    CHECK_FALSE(run(level, placed(-15.0)).goalStep());
 }
 
 TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, the dominoes fall in turn",
@@ -432,7 +502,7 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
                     played.fellAt[d] = i + 1;
             if (x) played.heavyLeftmost = std::min(played.heavyLeftmost, run.world().circles()[2].position.x);
         }
-        played.goal = run.goalFrame();
+        played.goal = run.goalStep();
         played.plankAngle = run.world().bodies()[0].angle;
         return played;
     };
@@ -533,15 +603,15 @@ TEST_CASE("crates: the crates' impacts are on one axis, v' = u - C (v - u), too 
     CHECK(crateOnCrate == 99);
     CHECK(crateOnFlag == 146);
     CHECK(crateAtImpact == Approx(0.85 * ballAtImpact).epsilon(1e-12));
-    REQUIRE(run.goalFrame());
-    CHECK(*run.goalFrame() == 146);
+    REQUIRE(run.goalStep());
+    CHECK(*run.goalStep() == 146);
     CHECK(run.world().stats().autoSolverSteps == 0); // nothing has friction: every step was exact
     CHECK(ballRightmost < -1.2);                     // the gate held the ball: only a crate reached the flag
     const auto played = [&](std::vector<Placement> placements) {
         REQUIRE_FALSE(checkPlacements(level, placements));
         LevelRun r(level, placements);
         for (int i = 0; i < 480; ++i) r.step();
-        return r.goalFrame();
+        return r.goalStep();
     };
     CHECK(played(drop(-4.5, 5.5)));
     CHECK_FALSE(played(drop(-4.5, 4.0))); // 3.14 m/s: lands on the wall's top and skims past the flag
@@ -564,15 +634,15 @@ TEST_CASE("a domino that tips onto a target marks it hit, one that stands does n
     };
     LevelRun falls(level(-20.0), {});
     for (int i = 0; i < 180; ++i) falls.step();
-    REQUIRE(falls.goalFrame());
+    REQUIRE(falls.goalStep());
     REQUIRE(falls.events().size() >= 1);
     CHECK(falls.events().front().kind == EventKind::hit);
     CHECK(falls.events().front().item == "T");
-    std::printf("domino onto a target: hit at frame %lld, point [%.3f, %.3f]\n",
-                static_cast<long long>(falls.events().front().frame), falls.events().front().position.x,
+    std::printf("domino onto a target: hit at step %lld, point [%.3f, %.3f]\n",
+                static_cast<long long>(falls.events().front().step), falls.events().front().position.x,
                 falls.events().front().position.y);
     LevelRun stands(level(-5.0), {});
     for (int i = 0; i < 180; ++i) stands.step();
-    CHECK_FALSE(stands.goalFrame());
+    CHECK_FALSE(stands.goalStep());
     CHECK(stands.events().empty());
 }

@@ -103,7 +103,7 @@ std::uint64_t replayHash(const SceneDesc& level, const std::string& text, std::i
     LevelRun run(level, load.script->placements);
     std::size_t next = 0;
     for (std::int64_t i = 0;; ++i) {
-        for (; next < load.script->actions.size() && load.script->actions[next].frame == i; ++next)
+        for (; next < load.script->actions.size() && load.script->actions[next].step == i; ++next)
             REQUIRE(takeAction(load.script->actions[next], run).empty());
         if (i == steps) break;
         run.step();
@@ -194,20 +194,20 @@ TEST_CASE("play: the debug keys pause, slow, show and clear trails, reset and qu
     REQUIRE(s.mode() == PlaySession::Mode::running);
     // Real-time pacing: 0.05 s at a 0.01 s step is five steps.
     s.advance(0.05);
-    CHECK(s.run()->frame() == 5);
+    CHECK(s.run()->steps() == 5);
     s.key(Key::p, KeyAction::press);
     s.advance(0.05);
-    CHECK(s.run()->frame() == 5);
+    CHECK(s.run()->steps() == 5);
     s.key(Key::p, KeyAction::press);
     // Slow motion runs at a tenth of real time.
     s.key(Key::s, KeyAction::press);
     CHECK(s.slowMotion());
     s.advance(0.5);
-    CHECK(s.run()->frame() == 10);
+    CHECK(s.run()->steps() == 10);
     s.key(Key::s, KeyAction::press);
     // A long stall does not make the machine race: at most 8 steps per call.
     s.advance(10.0);
-    CHECK(s.run()->frame() == 18);
+    CHECK(s.run()->steps() == 18);
     // A held key's repeats toggle nothing.
     s.key(Key::d, KeyAction::press);
     s.key(Key::d, KeyAction::repeat);
@@ -244,21 +244,21 @@ TEST_CASE("play: the recorded script replays to the same state", "[play]") {
     CHECK_THAT(s.message(), Catch::StartsWith("aim gun: 50 degrees"));
     s.key(Key::space, KeyAction::press);
     for (int i = 0; i < 25; ++i) s.step();
-    click(s, {-6.0, 0.6}); // fires the gun at frame 25
+    click(s, {-6.0, 0.6}); // fires the gun at step 25
     for (int i = 0; i < 15; ++i) s.step();
-    click(s, {6.0, 0.5});  // sets the bomb off at frame 40, long before its fuse
+    click(s, {6.0, 0.5});  // sets the bomb off at step 40, long before its fuse
     click(s, {-6.0, 0.6}); // the gun has fired already: nothing is recorded
     CHECK_THAT(s.message(), Catch::Contains("has fired already"));
     for (int i = 0; i < 60; ++i) s.step();
     REQUIRE(s.actions().size() == 2);
-    CHECK(s.actions()[0].frame == 25);
-    CHECK(s.actions()[1].frame == 40);
+    CHECK(s.actions()[0].step == 25);
+    CHECK(s.actions()[1].step == 40);
     CHECK(s.actions()[1].kind == ActionKind::detonate);
 
     const std::string script = s.recordedScript();
     CHECK_THAT(script, Catch::Contains("angle = -15"));
     CHECK_THAT(script, Catch::Contains("angle = 50"));
-    CHECK(replayHash(level, script, s.run()->frame()) == stateHash(s.run()->world()));
+    CHECK(replayHash(level, script, s.run()->steps()) == stateHash(s.run()->world()));
 
     // After R the script is the set-up as it stands, without the run's actions.
     s.key(Key::r, KeyAction::press);
@@ -275,27 +275,27 @@ TEST_CASE("play: a loaded solution plays to its goal and records an expectation 
         s.load(*solution.script);
         CHECK(s.placements().size() == solution.script->placements.size());
         s.key(Key::space, KeyAction::press);
-        while (!s.run()->goalFrame() && s.run()->frame() < 2000) s.step();
-        REQUIRE(s.run()->goalFrame());
+        while (!s.run()->goalStep() && s.run()->steps() < 2000) s.step();
+        REQUIRE(s.run()->goalStep());
         const std::string script = s.recordedScript();
-        CHECK_THAT(script, Catch::Contains("before_frame = " + std::to_string(*s.run()->goalFrame() + 1)));
-        CHECK(replayHash(level, script, s.run()->frame()) == stateHash(s.run()->world()));
+        CHECK_THAT(script, Catch::Contains("before_step = " + std::to_string(*s.run()->goalStep() + 1)));
+        CHECK(replayHash(level, script, s.run()->steps()) == stateHash(s.run()->world()));
     }
 }
 
 TEST_CASE("play: every kind of action a loaded script takes is recorded in the script's own words", "[play]") {
     // The rope is cut by a script action here, not by the switch: the recording must say "cut".
     const SceneDesc level = loadLevel("rope");
-    const ScriptLoad script = parseScript("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n",
+    const ScriptLoad script = parseScript("level = \"rope\"\n[[action]]\nstep = 5\ndo = \"cut\"\nitem = \"rope\"\n",
                                           "cut.toml", level);
     INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
     REQUIRE(script.script);
     PlaySession s(level, "rope.toml", kFrame);
     s.load(*script.script);
     s.key(Key::space, KeyAction::press);
-    while (s.run()->frame() < 20) s.step();
+    while (s.run()->steps() < 20) s.step();
     REQUIRE(s.run()->world().ropes()[0].cut);
     const std::string recorded = s.recordedScript();
     CHECK_THAT(recorded, Catch::Contains("do = \"cut\"\nitem = \"rope\""));
-    CHECK(replayHash(level, recorded, s.run()->frame()) == stateHash(s.run()->world()));
+    CHECK(replayHash(level, recorded, s.run()->steps()) == stateHash(s.run()->world()));
 }

@@ -88,7 +88,7 @@ inline std::vector<game::Action> randomActions(const game::SceneDesc& level,
     const int count = rng.below(6);
     for (int i = 0; i < count; ++i) {
         game::Action a;
-        a.frame = rng.below(static_cast<int>(steps));
+        a.step = rng.below(static_cast<int>(steps));
         switch (rng.below(4)) {
         case 0: // a cannon: aim, fire or fire-when
             if (cannons.empty()) continue;
@@ -140,7 +140,7 @@ inline std::vector<game::Action> randomActions(const game::SceneDesc& level,
         actions.push_back(a);
     }
     std::stable_sort(actions.begin(), actions.end(),
-                     [](const game::Action& x, const game::Action& y) { return x.frame < y.frame; });
+                     [](const game::Action& x, const game::Action& y) { return x.step < y.step; });
     return actions;
 }
 

@@ -45,7 +45,8 @@ std::vector<SceneDesc> shippedLevels() {
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
         const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos)
+        // levels/index.toml lists the levels; it is not one.
+        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos && name != "index.toml")
             files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
@@ -168,7 +169,7 @@ void runPlay(const SceneDesc& level, const RandomPlay& play, Method method, std:
     std::size_t next = 0;
     double worst = 0.0;
     for (std::int64_t i = 0; i < steps; ++i) {
-        for (; next < play.actions.size() && play.actions[next].frame == i; ++next)
+        for (; next < play.actions.size() && play.actions[next].step == i; ++next)
             tally.declined += !takeAction(play.actions[next], run).empty();
         run.step();
         const World& world = run.world();

@@ -198,6 +198,27 @@ TEST_CASE("draw list: text becomes crisp boxes from the top-left corner, odd cha
     }
 }
 
+// textWidth lays out HUD lines (issue 23: a goal's text wraps inside the frame): every box a text
+// is drawn with must lie within it, at any scale, and it grows with the text.
+TEST_CASE("text width: the drawn boxes of a text lie within textWidth of its left edge", "[render]") {
+    CHECK(textWidth("", 2) == 0);
+    for (const std::string text : {"I", "hit the flag with the ball", "REACHED at step 266: WWW mmm ..."}) {
+        for (const int scale : {1, 2, 3}) {
+            CAPTURE(text, scale);
+            DrawList list;
+            list.text(10, 5, text, {0, 0, 0, 255}, scale);
+            std::vector<ShapeInstance> instances;
+            buildInstances(list, Camera{}, {4000, 100}, instances);
+            float right = 0.0f;
+            for (const ShapeInstance& s : instances) right = std::max(right, s.geomA[0] + s.geomA[2]);
+            CHECK(right <= 10.0f + static_cast<float>(textWidth(text, scale)));
+            CHECK(right > 10.0f + 0.5f * static_cast<float>(textWidth(text, scale)));
+            CHECK(textWidth(text, scale) == scale * textWidth(text, 1));
+        }
+    }
+    CHECK(textWidth("hit the flag", 2) > textWidth("hit the", 2));
+}
+
 TEST_CASE("image comparison: identical and one-pixel-shifted frames match", "[render]") {
     Image card = testCard();
     Comparison same = compareImages(card, card);

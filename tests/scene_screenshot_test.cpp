@@ -1,6 +1,6 @@
-// Scene screenshot tests: every physics scene in levels/physics/ is simulated to a chosen frame,
+// Scene screenshot tests: every physics scene in levels/physics/ is simulated to a chosen step,
 // drawn by the game's SceneView exactly as `rube run --out` draws it, rendered offscreen
-// (OSMesa) at 640x360 and compared with its golden screenshots/<scene>_<frame>.png.
+// (OSMesa) at 640x360 and compared with its golden screenshots/<scene>_<step>.png.
 // A missing golden fails and leaves the frame in the build tree's screenshot-failures/ to be
 // looked at; UPDATE_SCREENSHOTS=1 regenerates the goldens (look at each before committing).
 #include "scene_file.hpp"
@@ -30,7 +30,7 @@ constexpr render::FrameSize kFrameSize{640, 360};
 // best (trails where paths matter, impact markers where impacts do).
 struct Golden {
     const char* scene;
-    int frame; // = steps taken, as with `rube run --every 1`
+    int step; // steps taken: the golden's name, and the HUD's "step N"
     bool trails;
     bool impacts;
 };
@@ -77,12 +77,12 @@ render::Image renderGolden(const Golden& golden) {
     options.impacts = golden.impacts;
     SceneView view(load.scene->name, world, sceneCamera(frameScene(*load.scene, world), kFrameSize), kFrameSize,
                    options);
-    for (int step = 0; step < golden.frame; ++step) {
+    for (int i = 0; i < golden.step; ++i) {
         world.step();
         view.afterStep(world);
     }
     render::DrawList list;
-    view.draw(world, golden.frame, list);
+    view.draw(world, list);
     return renderer().render(list, view.camera());
 }
 
@@ -92,7 +92,7 @@ void checkGoldens(std::string_view scene) {
         if (golden.scene != scene) continue;
         ++checked;
         const auto goldenPath = std::filesystem::path(RUBE_SCREENSHOTS_DIR) /
-                                render::goldenFileName(scene, golden.frame);
+                                render::goldenFileName(scene, golden.step);
         const render::ScreenshotCheck check = render::checkScreenshot(renderGolden(golden), goldenPath,
                                                                       RUBE_SCREENSHOT_FAILURES_DIR);
         INFO(check.message);

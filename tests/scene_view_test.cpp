@@ -107,7 +107,7 @@ TEST_CASE("a world becomes walls, balls with spokes in the palette's colours, an
     const render::FrameSize size{640, 360};
     SceneView view(scene.name, world, sceneCamera(frameScene(scene, world), size), size);
     render::DrawList list;
-    view.draw(world, 7, list);
+    view.draw(world, list);
 
     const auto walls = primitivesOf<render::primitive::Capsule>(list);
     REQUIRE(walls.size() == 1);
@@ -124,7 +124,11 @@ TEST_CASE("a world becomes walls, balls with spokes in the palette's colours, an
 
     const auto texts = primitivesOf<render::primitive::Text>(list);
     REQUIRE(texts.size() == 1);
-    CHECK(list.textOf(texts[0]) == "view-test   frame 7   t = 0.000 s   exact");
+    CHECK(list.textOf(texts[0]) == "view-test   step 0   t = 0.000 s   exact");
+    // The HUD counts steps, whatever frame of a run it is drawn into: after 3 steps of 1/60 s, step 3.
+    for (int i = 0; i < 3; ++i) world.step();
+    view.draw(world, list);
+    CHECK(list.textOf(primitivesOf<render::primitive::Text>(list)[0]) == "view-test   step 3   t = 0.050 s   exact");
     CHECK(primitivesOf<render::primitive::Polyline>(list).empty()); // overlays are off by default
     CHECK(primitivesOf<render::primitive::Arrow>(list).empty());
 }

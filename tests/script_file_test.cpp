@@ -45,7 +45,7 @@ std::string fields(const ScriptDesc& s) {
             << exact(p.position.y) << " angle " << exact(p.angle) << " degrees " << exact(p.angleDegrees) << " name '"
             << p.name << "'\n";
     for (const Action& a : s.actions)
-        out << "action frame " << a.frame << " do " << actionVerb(a.kind) << " item '" << a.item << "' angle "
+        out << "action step " << a.step << " do " << actionVerb(a.kind) << " item '" << a.item << "' angle "
             << (a.angle ? exact(*a.angle) : "-") << " degrees " << exact(a.angleDegrees) << " point "
             << (a.point ? exact(a.point->x) + ' ' + exact(a.point->y) : "-") << " target '" << a.target << "' arc "
             << (a.highArc ? "high" : "low") << '\n';
@@ -95,35 +95,36 @@ TEST_CASE("every shipped solution script reads, writes and reads back to the sam
 }
 
 TEST_CASE("every key a script may hold is written back as it was read", "[level][script]") {
-    // Between them, these use every action, every kind of expectation, steps, a named and a
+    // Between them, these use every action, every kind of expectation (with and without `by`), steps, a named and a
     // turned placement, aims at an angle (with and without an arc), a point and an item, and
     // numbers that are not short in binary (0.1, 1/3 written out).
     const SceneDesc cannon = loadLevel(kLevels / "cannon-arc.toml");
-    checkRoundTrip(
-        "level = \"cannon-arc\"\nsteps = 900\n[capture]\nevery = 3\n"
-        "[[action]]\nframe = 0\ndo = \"rotate\"\nitem = \"gun\"\nangle = 33.333333333333336\n"
-        "[[action]]\nframe = 1\ndo = \"aim\"\nitem = \"gun\"\nangle = 40.1\narc = \"high\"\n"
-        "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\npoint = [0.1, -2.7]\n"
-        "[[action]]\nframe = 2\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"low\"\n"
-        "[[action]]\nframe = 3\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"bullseye\"\n"
-        "[[action]]\nframe = 9\ndo = \"fire\"\nitem = \"gun\"\n"
-        "[[expect]]\nshot = \"gun\"\nbefore_frame = 10\n[[expect]]\nhit = \"bullseye\"\nbefore_frame = 500\n",
-        "cannon-arc every key", cannon);
+    checkRoundTrip("level = \"cannon-arc\"\nsteps = 900\n[capture]\nevery = 3\n"
+                   "[[action]]\nstep = 0\ndo = \"rotate\"\nitem = \"gun\"\nangle = 33.333333333333336\n"
+                   "[[action]]\nstep = 1\ndo = \"aim\"\nitem = \"gun\"\nangle = 40.1\narc = \"high\"\n"
+                   "[[action]]\nstep = 2\ndo = \"aim\"\nitem = \"gun\"\npoint = [0.1, -2.7]\n"
+                   "[[action]]\nstep = 2\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"low\"\n"
+                   "[[action]]\nstep = 3\ndo = \"fire-when\"\nitem = \"gun\"\ntarget = \"bullseye\"\n"
+                   "[[action]]\nstep = 9\ndo = \"fire\"\nitem = \"gun\"\n"
+                   "[[expect]]\nshot = \"gun\"\nbefore_step = 10\n[[expect]]\nhit = \"bullseye\"\nby = "
+                   "\"gun\"\nbefore_step = 500\n",
+                   "cannon-arc every key", cannon);
     const SceneDesc chain = loadLevel(kLevels / "chain-reaction.toml");
     checkRoundTrip("level = \"chain-reaction\"\n[capture]\nsize = [320, 180]\n"
                    "[[place]]\nkind = \"heavy\"\nposition = [-4.05, 5.1]\nname = \"lump \\\"one\\\"\"\n"
-                   "[[action]]\nframe = 4\ndo = \"toggle\"\nitem = \"button\"\n"
-                   "[[action]]\nframe = 7\ndo = \"detonate\"\nitem = \"tnt\"\n"
-                   "[[expect]]\nexplosion = \"tnt\"\nbefore_frame = 8\n[[expect]]\ngoal = true\nbefore_frame = 900\n",
+                   "[[action]]\nstep = 4\ndo = \"toggle\"\nitem = \"button\"\n"
+                   "[[action]]\nstep = 7\ndo = \"detonate\"\nitem = \"tnt\"\n"
+                   "[[expect]]\nexplosion = \"tnt\"\nbefore_step = 8\n[[expect]]\ngoal = true\nby = \"lump "
+                   "\\\"one\\\"\"\nbefore_step = 900\n",
                    "chain-reaction every key", chain);
     const SceneDesc rope = loadLevel(kLevels / "rope.toml");
-    checkRoundTrip("level = \"rope\"\n[[action]]\nframe = 5\ndo = \"cut\"\nitem = \"rope\"\n", "rope cut", rope);
+    checkRoundTrip("level = \"rope\"\n[[action]]\nstep = 5\ndo = \"cut\"\nitem = \"rope\"\n", "rope cut", rope);
     const SceneDesc ramp = loadLevel(kLevels / "ramp.toml");
     checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -29.5\n",
                    "ramp turned", ramp);
     // -0 keeps its sign (written as the integer 0 it would come back +0); a cannon aimed at -0 degrees.
     checkRoundTrip("level = \"ramp\"\n[[place]]\nkind = \"ramp\"\nposition = [-4.5, 2.5]\nangle = -0.0\n", "ramp at -0",
                    ramp);
-    checkRoundTrip("level = \"cannon-arc\"\n[[action]]\nframe = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = -0.0\n",
+    checkRoundTrip("level = \"cannon-arc\"\n[[action]]\nstep = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = -0.0\n",
                    "aim at -0", cannon);
 }

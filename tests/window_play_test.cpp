@@ -107,15 +107,15 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     REQUIRE(session.mode() == PlaySession::Mode::running);
     constexpr std::int64_t kCompared[] = {120, 300};
     std::vector<render::Image> windowFrames;
-    while (session.run()->frame() < kCompared[1]) {
+    while (session.run()->steps() < kCompared[1]) {
         session.step();
-        if (session.run()->frame() == kCompared[0] || session.run()->frame() == kCompared[1]) {
+        if (session.run()->steps() == kCompared[0] || session.run()->steps() == kCompared[1]) {
             const render::Image whole = show();
-            render::writePng(kWork / ("window-step-" + std::to_string(session.run()->frame()) + ".png"), whole);
+            render::writePng(kWork / ("window-step-" + std::to_string(session.run()->steps()) + ".png"), whole);
             windowFrames.push_back(levelArea(whole, frame));
-        } else if (session.run()->frame() % 20 == 0) show();
+        } else if (session.run()->steps() % 20 == 0) show();
     }
-    REQUIRE(session.run()->goalFrame());
+    REQUIRE(session.run()->goalStep());
 
     // The recording, replayed by `rube run` off-screen.
     const std::filesystem::path script = kWork / "ramp.recorded.toml";
@@ -128,7 +128,7 @@ TEST_CASE("a session played in a window replays off-screen to the same frames", 
     std::ifstream replay(kWork / "replay.txt");
     const std::string printed((std::istreambuf_iterator<char>(replay)), std::istreambuf_iterator<char>());
     CHECK_THAT(printed,
-               Catch::Contains("goal:             reached at frame " + std::to_string(*session.run()->goalFrame())));
+               Catch::Contains("goal:             reached at step " + std::to_string(*session.run()->goalStep())));
 
     for (std::size_t i = 0; i < windowFrames.size(); ++i) {
         char name[32];
@@ -163,7 +163,7 @@ TEST_CASE("a cannon aimed with the mouse and fired by a click replays to the sam
     session.mouseButton(MouseButton::left, false);
     REQUIRE(session.actions().size() == 1);
     CHECK(session.actions()[0].kind == ActionKind::fire);
-    CHECK(session.actions()[0].frame == 30);
+    CHECK(session.actions()[0].step == 30);
     for (int i = 0; i < 90; ++i) session.step();
     session.draw(list);
     renderer.draw(list, session.windowCamera());

@@ -70,6 +70,24 @@ public:
         body->CreateFixture(&fixture);
     }
 
+    int addBox(const BoxSpec& s) override {
+        b2BodyDef bodyDef;
+        bodyDef.type = s.fixed ? b2_staticBody : b2_dynamicBody;
+        bodyDef.position = toB2(s.position);
+        bodyDef.angle = static_cast<float>(s.angle);
+        b2Body* body = world_.CreateBody(&bodyDef);
+        b2PolygonShape shape;
+        shape.SetAsBox(static_cast<float>(s.halfExtents.x), static_cast<float>(s.halfExtents.y));
+        b2FixtureDef fixture;
+        fixture.shape = &shape;
+        fixture.density = static_cast<float>(s.density);
+        fixture.restitution = static_cast<float>(s.bounciness);
+        fixture.friction = static_cast<float>(s.friction);
+        body->CreateFixture(&fixture);
+        boxes_.push_back(body);
+        return static_cast<int>(boxes_.size()) - 1;
+    }
+
     void step() override { world_.Step(timeStep_, kVelocityIterations, kPositionIterations); }
     int ballCount() const override { return static_cast<int>(balls_.size()); }
     BallState ball(int i) const override {
@@ -129,6 +147,15 @@ public:
         return false;
     }
 
+    int boxCount() const override { return static_cast<int>(boxes_.size()); }
+    BoxState box(int i) const override {
+        const b2Body* b = boxes_[static_cast<std::size_t>(i)];
+        return {{b->GetPosition().x, b->GetPosition().y},
+                b->GetAngle(),
+                {b->GetLinearVelocity().x, b->GetLinearVelocity().y},
+                b->GetAngularVelocity()};
+    }
+
 private:
     b2Body* ground() {
         if (!ground_) {
@@ -144,6 +171,7 @@ private:
     std::vector<b2Body*> balls_;
     b2Body* ground_ = nullptr;
     std::vector<b2Joint*> pins_; // per ball: its revolute, for the gears
+    std::vector<b2Body*> boxes_;
 };
 
 [[maybe_unused]] const bool registered = registerEngine(

@@ -66,6 +66,21 @@ public:
         add(shape);
     }
 
+    int addBox(const BoxSpec& s) override {
+        const double w = 2.0 * s.halfExtents.x, h = 2.0 * s.halfExtents.y;
+        const double mass = s.density * w * h;
+        cpBody* body = s.fixed ? cpBodyNewStatic() : cpBodyNew(mass, cpMomentForBox(mass, w, h));
+        cpBodySetPosition(body, toCp(s.position));
+        cpBodySetAngle(body, s.angle);
+        add(body);
+        cpShape* shape = cpBoxShapeNew(body, w, h, 0.0);
+        cpShapeSetElasticity(shape, s.bounciness);
+        cpShapeSetFriction(shape, s.friction);
+        add(shape);
+        boxes_.push_back(body);
+        return static_cast<int>(boxes_.size()) - 1;
+    }
+
     void step() override { cpSpaceStep(space_, timeStep_); }
     int ballCount() const override { return static_cast<int>(balls_.size()); }
     BallState ball(int i) const override {
@@ -104,6 +119,13 @@ public:
         return false;
     }
 
+    int boxCount() const override { return static_cast<int>(boxes_.size()); }
+    BoxState box(int i) const override {
+        const cpBody* b = boxes_[static_cast<std::size_t>(i)];
+        const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
+        return {{p.x, p.y}, cpBodyGetAngle(b), {v.x, v.y}, cpBodyGetAngularVelocity(b)};
+    }
+
 private:
     void add(cpBody* body) { bodies_.push_back(cpSpaceAddBody(space_, body)); }
     void add(cpShape* shape) { shapes_.push_back(cpSpaceAddShape(space_, shape)); }
@@ -112,6 +134,7 @@ private:
     cpSpace* space_;
     double timeStep_;
     std::vector<cpBody*> balls_;
+    std::vector<cpBody*> boxes_;
     std::vector<cpBody*> bodies_;
     std::vector<cpShape*> shapes_;
     std::vector<cpConstraint*> constraints_;

@@ -94,7 +94,7 @@ bool writeFailures(const std::string& path, bool quick) {
 int main(int argc, char** argv) {
     CLI::App app{"rube_bench: rube's time-step methods against Box2D 2.4.1 and Chipmunk 7.0.3, speed against accuracy"};
     bool quick = false, list = false, failuresOnly = false, noScaling = false, scalingOnly = false;
-    std::string csvPath, chartPath, scalingChartPath, failuresPath, frontPath;
+    std::string csvPath, chartPath, scalingChartPath, boxScalingChartPath, failuresPath, frontPath;
     std::vector<std::string> sceneFilter, engineFilter;
     std::vector<int> rates;
     int repeats = 5;
@@ -109,7 +109,9 @@ int main(int argc, char** argv) {
                    "chart PNG (default: screenshots/speed-vs-accuracy.png; --quick: none; \"\": none)");
     app.add_option("--scaling-chart", scalingChartPath,
                    "scaling chart PNG (default: screenshots/scaling.png; --quick: none; \"\": none)");
-    app.add_flag("--no-scaling", noScaling, "leave out the scaling sweep (pile-scaling-*)");
+    app.add_option("--box-scaling-chart", boxScalingChartPath,
+                   "the boxes' scaling chart PNG (default: screenshots/scaling-boxes.png; --quick: none; \"\": none)");
+    app.add_flag("--no-scaling", noScaling, "leave out the scaling sweeps (pile-scaling-*, pyramid-scaling-*)");
     app.add_flag("--scaling", scalingOnly,
                  "only the scaling sweep, with the peers up to 20,000 balls too (the full run stops them at 5000)");
     app.add_flag("--failures", failuresOnly, "only sweep where rube's methods fail and write the table (no timing)");
@@ -158,6 +160,8 @@ int main(int argc, char** argv) {
         chartPath = (source / "screenshots/speed-vs-accuracy.png").string();
     if (scalingChartPath.empty() && !quick && !given("--scaling-chart"))
         scalingChartPath = (source / "screenshots/scaling.png").string();
+    if (boxScalingChartPath.empty() && !quick && !given("--box-scaling-chart"))
+        boxScalingChartPath = (source / "screenshots/scaling-boxes.png").string();
 
     bench::RunOptions options;
     options.size.quick = quick;
@@ -168,25 +172,27 @@ int main(int argc, char** argv) {
     options.chipmunkSleep = chipmunkSleep;
 
     std::vector<bench::Row> rows;
-    std::vector<std::string> sceneOrder, scalingOrder;
+    std::vector<std::string> sceneOrder, scalingOrder, boxScalingOrder;
     const auto start = std::chrono::steady_clock::now();
     for (const auto& scene : bench::scenes()) {
         if (!selected(sceneFilter, scene.name)) continue;
         const bool scaling = scene.scalingBodies > 0;
         if (scaling ? noScaling || (quick && scene.scalingBodies > kQuickScalingBodies) : scalingOnly) continue;
-        (scaling ? scalingOrder : sceneOrder).push_back(scene.name);
+        (scaling ? (scene.boxes ? boxScalingOrder : scalingOrder) : sceneOrder).push_back(scene.name);
         bench::RunOptions sceneOptions = options;
         if (scaling) sceneOptions.runTimeLimit = std::max(options.runTimeLimit, kScalingRunLimit);
         std::vector<bench::Engine> sceneEngines;
         for (const auto& engine : engines) {
             if (!scaling || !runsInScaling(engine)) continue;
             sceneEngines.push_back(engine);
-            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep)
+            // Rigid bodies never sleep yet, so for boxes the awake variant would only repeat the run.
+            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep && !scene.boxes)
                 sceneEngines.push_back(awakeVariant(engine));
         }
         for (const auto& engine : scaling ? sceneEngines : engines) {
             if (!selected(engineFilter, engine.name)) continue;
-            if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly &&
+            if (scene.boxes && !engine.boxes) continue; // only the solver moves boxes that turn
+            if (scaling && engine.kind == bench::EngineKind::peer && !scalingOnly && !scene.boxes &&
                 scene.scalingBodies > kFullRunPeerScalingBodies) {
                 std::fprintf(stderr, "%-18s %-16s left out of the full run (cost): rube_bench --scaling runs it\n",
                              scene.name.c_str(), engine.name.c_str());
@@ -194,7 +200,7 @@ int main(int argc, char** argv) {
             }
             // Peers run at the 60 Hz step their users run them at: one point each on the chart; the
             // scaling sweep runs everything at 60 Hz, since it measures cost against N, not dt.
-            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer || scaling
+            const std::vector<int> engineRates = engine.kind == bench::EngineKind::peer || scaling || scene.boxes
                                                      ? std::vector<int>{60}
                                                      : rates;
             // Coarse steps first: once a step times out, every finer one would too (more steps for
@@ -259,6 +265,17 @@ int main(int argc, char** argv) {
         const std::string why = bench::drawScalingChart(
             rows, scalingOrder, std::filesystem::temp_directory_path() / "rube-bench-chart", scalingChartPath);
         std::cerr << "rube_bench: " << (why.empty() ? "drew " + scalingChartPath : why) << '\n';
+    }
+    if (!boxScalingChartPath.empty() && !boxScalingOrder.empty()) {
+        const bench::ScalingChartText text{
+            "scaling-boxes",
+            "Box2D's pyramid of unit boxes with base 20, 40 and 70 (180 steps) and 100 (large-pyramid, 500 steps) "
+            "at 60 Hz: cost per body-step",
+            150.0, 7000.0};
+        const std::string why = bench::drawScalingChart(rows, boxScalingOrder,
+                                                        std::filesystem::temp_directory_path() / "rube-bench-chart",
+                                                        boxScalingChartPath, text);
+        std::cerr << "rube_bench: " << (why.empty() ? "drew " + boxScalingChartPath : why) << '\n';
     }
     // The failure table is part of every full run (it takes about a second) unless scenes were picked.
     if (sceneFilter.empty() && engineFilter.empty() && !scalingOnly && !writeFailures(failuresPath, quick)) return 1;

@@ -39,11 +39,29 @@ public:
         world_.addSegment(def);
     }
 
+    int addBox(const BoxSpec& s) override {
+        rube::RigidBodyDef def;
+        def.shape = rube::BodyShape::box;
+        def.position = s.position;
+        def.angle = s.angle;
+        def.halfExtents = s.halfExtents;
+        def.mass = s.density * 4.0 * s.halfExtents.x * s.halfExtents.y;
+        def.material = {s.bounciness, s.friction};
+        def.motion = s.fixed ? rube::Motion::fixed : rube::Motion::dynamic;
+        boxes_.push_back(world_.addBody(def));
+        return static_cast<int>(boxes_.size()) - 1;
+    }
+
     void step() override { world_.step(); }
     int ballCount() const override { return static_cast<int>(world_.circles().size()); }
     BallState ball(int i) const override {
         const auto& c = world_.circles()[static_cast<std::size_t>(i)];
         return {c.position, c.velocity, c.angularVelocity, c.angle};
+    }
+    int boxCount() const override { return static_cast<int>(boxes_.size()); }
+    BoxState box(int i) const override {
+        const rube::RigidBody& b = world_.body(boxes_[static_cast<std::size_t>(i)]);
+        return {b.position, b.angle, b.velocity, b.angularVelocity};
     }
     std::int64_t capsHit() const override { return world_.stats().capsHit; }
 
@@ -104,11 +122,14 @@ private:
 
     rube::World world_;
     std::vector<rube::JointId> pins_; // per ball: its pin, for the gears
+    std::vector<rube::BodyId> boxes_;
 };
 
+// Boxes that turn are moved by the solver alone (and by auto, which hands them to it).
 Engine rubeEngine(rube::Method method, int order) {
     return {"rube-" + std::string(rube::methodName(method)), EngineKind::rubeMethod, order,
-            [method](const WorldSpec& spec) { return std::make_unique<RubeSim>(spec, method); }};
+            [method](const WorldSpec& spec) { return std::make_unique<RubeSim>(spec, method); },
+            method == rube::Method::solver || method == rube::Method::automatic};
 }
 
 [[maybe_unused]] const bool registered = registerEngine(rubeEngine(rube::Method::discrete, 0)) &&

@@ -31,7 +31,7 @@ void measure(const Scene& scene, const Engine& engine, double timeStep, const Ru
         return;
     }
     auto probe = scene.probe(options.size, timeStep);
-    row.bodies = sim->ballCount(); // known even if the run times out
+    row.bodies = sim->ballCount() + sim->boxCount(); // known even if the run times out
     std::vector<std::uint8_t> escaped(static_cast<std::size_t>(sim->ballCount()), 0);
     const auto start = Clock::now();
     for (int step = 1; step <= row.steps; ++step) {
@@ -44,6 +44,11 @@ void measure(const Scene& scene, const Engine& engine, double timeStep, const Ru
                 escaped[static_cast<std::size_t>(i)] = 1;
                 ++row.escapes;
             }
+        }
+        for (int i = 0; i < sim->boxCount(); ++i) {
+            const BoxState b = sim->box(i);
+            if (!rube::isFinite(b.position) || !rube::isFinite(b.velocity) || !std::isfinite(b.angle))
+                row.nonFinite = true;
         }
         if (std::chrono::duration<double>(Clock::now() - start).count() > options.runTimeLimit) {
             row.timeout = true; // an engine stuck on this scene must not stall the whole bench
@@ -75,7 +80,9 @@ Row runScene(const Scene& scene, const Engine& engine, double timeStep, const Ru
     row.timeStep = timeStep;
     row.steps = std::max(1, static_cast<int>(std::lround(scene.duration(options.size) / timeStep)));
 
-    measure(scene, engine, timeStep, options, row);
+    RunOptions sceneOptions = options;
+    sceneOptions.runTimeLimit = std::max(options.runTimeLimit, scene.runTimeLimit);
+    measure(scene, engine, timeStep, sceneOptions, row);
     if (row.timeout || row.lacksJoint) return row;
 
     std::vector<double> seconds{timedRun(scene, engine, timeStep, options, row.steps)};

@@ -16,7 +16,8 @@
 namespace bench {
 
 std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::string>& scalingScenes,
-                             const std::filesystem::path& workDir, const std::filesystem::path& png) {
+                             const std::filesystem::path& workDir, const std::filesystem::path& png,
+                             const ScalingChartText& text) {
     if (std::string why = prepareGnuplot(workDir, png); !why.empty()) return why;
 
     // One series per engine, by body count; timed-out runs have no cost and are left out.
@@ -32,20 +33,19 @@ std::string drawScalingChart(std::span<const Row> rows, const std::vector<std::s
     }
     const auto target = cheapest.contains("rube-solver-awake") ? cheapest.find("rube-solver-awake") : cheapest.begin();
 
-    const std::filesystem::path script = workDir / "scaling.gp";
+    const std::filesystem::path script = workDir / (text.name + ".gp");
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 1000,650 font ',11'\n"
        << "set output " << gnuplotQuoted(png) << "\n"
        << "set termoption noenhanced\nset logscale x\nset grid\nset key top left\n"
-       << "set title 'The pile widened to N balls (the same 50 rows, a box N/1000 times as wide), 600 steps at 60 Hz: "
-          "cost per body-step'\n"
+       << "set title " << gnuplotQuoted(text.title) << "\n"
        << "set xlabel 'bodies (log)'\nset ylabel 'microseconds per body-step (median)'\nset yrange [0:*]\n"
-       << "set xrange [70:28000]\n";
+       << "set xrange [" << text.xMin << ":" << text.xMax << "]\n";
     std::string plot;
     int colour = 1;
     for (auto& [key, list] : series) {
         std::sort(list.begin(), list.end(), [](const Row* a, const Row* b) { return a->bodies < b->bodies; });
-        const std::filesystem::path data = workDir / ("scaling." + key.second + ".dat");
+        const std::filesystem::path data = workDir / (text.name + "." + key.second + ".dat");
         std::ofstream out(data);
         for (const Row* r : list) out << r->bodies << ' ' << r->usPerBodyStep << '\n';
         if (!plot.empty()) plot += ", ";

@@ -48,6 +48,8 @@ struct Scene {
     rube::Vec2 boundsMin{-1e6, -1e6}, boundsMax{1e6, 1e6}; ///< a ball whose centre leaves them escaped
     std::function<void(Sim&, const SceneSize&)> build;
     std::function<std::unique_ptr<Probe>(const SceneSize&, double timeStep)> probe;
+    bool boxes = false;      ///< has boxes that turn: run only by engines with Engine::boxes, at 60 Hz (like for like)
+    double runTimeLimit = 0; ///< seconds a measurement run may take, when more than RunOptions' (large pyramids)
     int scalingBodies = 0; ///< > 0: a point of the scaling sweep with this many bodies (rube's solver and the peers at
                            ///< 60 Hz, its own chart)
 };

@@ -54,6 +54,17 @@ struct JointSpec {
     double stiffness = 0.0, damping = 0.0, restLength = 0.0; ///< spring: N/m, N s/m, m
 };
 
+/// A box as a scene asks for it: dynamic unless `fixed`, its mass from a density (kg/m^2).
+struct BoxSpec {
+    Vec2 position{};
+    double angle = 0.0; ///< radians, counter-clockwise
+    Vec2 halfExtents{0.5, 0.5};
+    double density = 1.0;
+    double friction = 0.6;
+    double bounciness = 0.0;
+    bool fixed = false; ///< static: the ground of a pyramid, the walls of a bin
+};
+
 /// The world settings every engine is given.
 struct WorldSpec {
     Vec2 gravity{0.0, -9.81};
@@ -70,6 +81,14 @@ struct BallState {
     double angle = 0.0;           ///< radians turned, counter-clockwise
 };
 
+/// A box's state as read back after a step (outside the timed loop).
+struct BoxState {
+    Vec2 position{};
+    double angle = 0.0;
+    Vec2 velocity{};
+    double angularVelocity = 0.0;
+};
+
 /// One engine instance running one scene. Implementations own their world.
 class Sim {
 public:
@@ -78,12 +97,25 @@ public:
     virtual int addBall(const BallSpec& spec) = 0;
     /// Adds a static or kinematic line.
     virtual void addLine(const LineSpec& spec) = 0;
+    /// Adds a box and returns its index among the boxes (0, 1, 2, ... in the order added); only
+    /// engines whose Engine::boxes is true are given scenes with boxes.
+    virtual int addBox(const BoxSpec& spec) {
+        (void)spec;
+        return -1;
+    }
     /// Advances by one time step: the only call inside the timed loop.
     virtual void step() = 0;
     /// The number of balls added.
     virtual int ballCount() const = 0;
     /// Ball i's position and velocity now.
     virtual BallState ball(int i) const = 0;
+    /// The number of boxes added.
+    virtual int boxCount() const { return 0; }
+    /// Box i's pose and velocity now.
+    virtual BoxState box(int i) const {
+        (void)i;
+        return {};
+    }
     /// Steps that hit the engine's own per-step cap (rube's event cap); 0 where there is none.
     virtual std::int64_t capsHit() const { return 0; }
     /// Adds a joint; false (and nothing added) when the engine or method does not have its kind.
@@ -107,6 +139,7 @@ struct Engine {
     EngineKind kind = EngineKind::rubeMethod;
     int order = 0; ///< position in the output (rube's methods first, then the peers)
     std::function<std::unique_ptr<Sim>(const WorldSpec&)> make;
+    bool boxes = true; ///< runs scenes with boxes that turn (rube's solver and auto, and the peers)
 };
 
 /// Every engine linked into this build (adapters register themselves, see registerEngine).

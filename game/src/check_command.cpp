@@ -2,6 +2,7 @@
 // warnings of a level (level_lint.hpp) that loads but is likely not what was meant.
 #include "check_command.hpp"
 
+#include "level_index.hpp"
 #include "level_lint.hpp"
 #include "scene_file.hpp"
 #include "script_file.hpp"
@@ -86,6 +87,24 @@ bool checkScene(const CheckOptions& options, const std::string& file, const std:
     return warnings.empty() || !options.strict;
 }
 
+// The level index (levels/index.toml): its [[level]] tables name files, which must exist beside it.
+bool checkIndex(const std::string& file, const std::string& text, std::ostream& out, std::ostream& err) {
+    const LevelIndexLoad load = parseLevelIndex(text, file, std::filesystem::path(file).parent_path());
+    if (!load.levels) {
+        print(load.errors, err);
+        return false;
+    }
+    out << file << ": ok (a level index of " << load.levels->size() << " levels)\n";
+    return true;
+}
+
+// A script's `level` is a string; an index's is an array of [[level]] tables.
+bool looksLikeIndex(const std::string& file, const std::string& text) {
+    Diagnostics ignored(file);
+    const std::optional<toml::table> document = parseToml(text, file, ignored);
+    return document && document->get_as<toml::array>("level") != nullptr;
+}
+
 } // namespace
 
 bool looksLikeScript(const std::string& file, const std::string& text) {
@@ -108,8 +127,9 @@ ExitCode checkFiles(const CheckOptions& options, std::ostream& out, std::ostream
             ok = false;
             continue;
         }
-        const bool good = looksLikeScript(file, *text) ? checkScript(options, file, out, err)
-                                                       : checkScene(options, file, *text, out, err);
+        const bool good = looksLikeIndex(file, *text)    ? checkIndex(file, *text, out, err)
+                          : looksLikeScript(file, *text) ? checkScript(options, file, out, err)
+                                                         : checkScene(options, file, *text, out, err);
         ok = ok && good;
     }
     return ok ? ExitCode::ok : ExitCode::badInput;

@@ -55,26 +55,19 @@ void lintZones(const SceneDesc& level, Diagnostics& warn, SourcePlace inventoryP
         warn.error(l.zones.front().place, "the level has placement zones but no [inventory] to place from");
 }
 
-// Steps a headless run takes: the goal's time limit, else the scene's duration (as `rube run` does).
-std::int64_t runSteps(const SceneDesc& level) {
-    if (level.level.goal && level.level.goal->timeLimit)
-        return static_cast<std::int64_t>(std::ceil(*level.level.goal->timeLimit / level.world.timeStep - 1e-9));
-    return level.defaultSteps();
-}
-
 } // namespace
 
 std::optional<std::int64_t> headlessGoalStep(const SceneDesc& level, const ScriptDesc& script) {
     if (!level.level.goal) return std::nullopt;
     LevelRun run(level, script.placements);
-    const std::int64_t steps = script.steps.value_or(runSteps(level));
+    const std::int64_t steps = script.steps.value_or(levelSteps(level));
     std::size_t next = 0;
-    for (std::int64_t i = 0; i < steps && !run.goalFrame(); ++i) {
-        for (; next < script.actions.size() && script.actions[next].frame == i; ++next)
+    for (std::int64_t i = 0; i < steps && !run.goalStep(); ++i) {
+        for (; next < script.actions.size() && script.actions[next].step == i; ++next)
             (void)takeAction(script.actions[next], run);
         run.step();
     }
-    return run.goalFrame();
+    return run.goalStep();
 }
 
 std::vector<SceneError> lintLevel(const SceneDesc& level, const std::string& file, std::string_view text,

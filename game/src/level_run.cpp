@@ -19,15 +19,26 @@ constexpr double kRestSeconds = 0.5;
 constexpr double kPathProbe = 1e-3;
 
 // What a World circle is to the game, kept in its user value: item i's circle holds i + 1, a shot
-// holds kShotMark, the scene's own circles hold 0.
+// from cannon c holds kShotMark + c, the scene's [[circle]] i holds kSceneMark + i.
 constexpr std::uint64_t kShotMark = std::uint64_t{1} << 63;
+constexpr std::uint64_t kSceneMark = std::uint64_t{1} << 62;
+constexpr std::uint64_t kMarks = kShotMark | kSceneMark;
 
 } // namespace
+
+std::int64_t levelSteps(const SceneDesc& level) {
+    if (level.level.goal && level.level.goal->timeLimit)
+        return static_cast<std::int64_t>(std::ceil(*level.level.goal->timeLimit / level.world.timeStep - 1e-9));
+    return level.defaultSteps();
+}
 
 LevelRun::LevelRun(const SceneDesc& scene, const std::vector<Placement>& placements)
     : scene_(scene), world_(buildWorld(scene)) {
     // buildWorld adds the scene's ropes first and in file order, so rope i is in slot i now.
     for (std::size_t i = 0; i < scene.ropes.size(); ++i) ropes_.push_back(world_.ropeId(static_cast<int>(i)));
+    // ... and its circles first, in file order: circle i is the scene's [[circle]] i.
+    for (std::size_t i = 0; i < scene.circles.size(); ++i)
+        world_.setUserValue(world_.circleId(static_cast<int>(i)), kSceneMark + i);
     for (const ItemDesc& item : scene.level.items) addItem(item);
     for (const Placement& p : placements) addItem(placedItem(p));
 }
@@ -68,10 +79,18 @@ int LevelRun::find(std::string_view name) const {
 
 int LevelRun::itemOf(CircleId circle) const {
     const std::uint64_t value = world_.userValue(circle);
-    return value == 0 || value == kShotMark ? -1 : static_cast<int>(value - 1);
+    return value == 0 || (value & kMarks) != 0 ? -1 : static_cast<int>(value - 1);
 }
 
-bool LevelRun::isProjectile(CircleId circle) const { return world_.userValue(circle) == kShotMark; }
+bool LevelRun::isProjectile(CircleId circle) const { return (world_.userValue(circle) & kShotMark) != 0; }
+
+std::string LevelRun::nameOf(CircleId circle) const {
+    const std::uint64_t value = world_.userValue(circle);
+    if (value & kShotMark) return items_[static_cast<std::size_t>(value - kShotMark)].name;
+    if (value & kSceneMark) return scene_.circleNames[static_cast<std::size_t>(value - kSceneMark)];
+    if (const int item = itemOf(circle); item >= 0) return items_[static_cast<std::size_t>(item)].name;
+    return "";
+}
 
 Vec2 LevelRun::itemPosition(int item) const {
     const ItemState& state = states_[static_cast<std::size_t>(item)];
@@ -126,10 +145,10 @@ void LevelRun::fire(int cannon) {
     const ItemDesc& item = items_[static_cast<std::size_t>(cannon)];
     CircleDef def = *item.kind->shot(item);
     def.velocity = launchVelocity(cannon);
-    def.userValue = kShotMark;
+    def.userValue = kShotMark + static_cast<std::uint64_t>(cannon);
     world_.addCircle(def);
     state.fired = true;
-    events_.push_back({EventKind::shot, frame(), world_.time(), item.name, item.position, 0});
+    events_.push_back({EventKind::shot, steps(), world_.time(), item.name, item.position, 0, ""});
 }
 
 std::string LevelRun::fireWhen(int cannon, int target) {
@@ -155,24 +174,44 @@ void LevelRun::cutRope(std::string_view name) {
     if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(ropes_[static_cast<std::size_t>(rope)]);
 }
 
+std::string LevelRun::bodyName(int slot) const {
+    // The scene's boxes and capsules are the World's bodies, in file order.
+    return slot >= 0 && static_cast<std::size_t>(slot) < scene_.bodyNames.size()
+               ? scene_.bodyNames[static_cast<std::size_t>(slot)]
+               : std::string();
+}
+
 void LevelRun::step() {
     const double dt = world_.def().timeStep;
     for (std::size_t i = 0; i < items_.size(); ++i) items_[i].kind->beforeStep(*this, static_cast<int>(i));
     world_.step();
     // The items struck, in the order of the impacts, gathered first: a hit may remove a body (a bomb
     // going off), which renumbers the world's slots and its list of impacts.
-    std::vector<std::pair<int, Vec2>> struckItems;
+    struct Struck {
+        int item;
+        Vec2 point;
+        std::string by;
+    };
+    std::vector<Struck> struckItems;
     for (const Impact& impact : world_.lastImpacts()) {
         // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact
         // has circle -1 and body set), or the circle a body struck (a ball's impact on a body).
         int struck = -1;
-        if (impact.otherKind == Other::circle) struck = impact.other;
-        else if (impact.otherKind == Other::body && impact.circle >= 0) struck = impact.circle;
+        std::string by;
+        if (impact.otherKind == Other::circle) {
+            struck = impact.other;
+            if (impact.circle >= 0) by = nameOf(world_.circleId(impact.circle));
+            else by = bodyName(impact.body);
+        } else if (impact.otherKind == Other::body && impact.circle >= 0) {
+            struck = impact.circle;
+            by = bodyName(impact.other);
+        }
         if (struck < 0) continue;
         if (const int item = itemOf(world_.circleId(struck)); item >= 0)
-            struckItems.emplace_back(item, impact.pointOfImpact);
+            struckItems.push_back({item, impact.pointOfImpact, std::move(by)});
     }
-    for (const auto& [item, point] : struckItems) items_[static_cast<std::size_t>(item)].kind->hit(*this, item, point);
+    for (const Struck& s : struckItems)
+        items_[static_cast<std::size_t>(s.item)].kind->hit(*this, s.item, s.point, s.by);
     for (std::size_t i = 0; i < items_.size(); ++i) {
         items_[i].kind->afterStep(*this, static_cast<int>(i));
         if (states_[i].timedShot && world_.time() >= *states_[i].timedShot - 0.5 * dt) {
@@ -183,19 +222,24 @@ void LevelRun::step() {
     checkGoal();
 }
 
-bool LevelRun::ballRestsIn(const ItemDesc& bucket) const {
-    for (const Circle& c : world_.circles()) {
+CircleId LevelRun::ballRestingIn(const ItemDesc& bucket) const {
+    const auto circles = world_.circles();
+    for (std::size_t i = 0; i < circles.size(); ++i) {
+        const Circle& c = circles[i];
         if (c.motion != Motion::dynamic || c.velocity.length() > kRestSpeed) continue;
-        if (bucket.kind->holds(bucket, c.position)) return true;
+        if (bucket.kind->holds(bucket, c.position)) return world_.circleId(static_cast<int>(i));
     }
-    return false;
+    return {};
 }
 
 void LevelRun::checkGoal() {
     const auto& goal = scene_.level.goal;
-    if (!goal || goalFrame_) return;
+    if (!goal || goalStep_) return;
     if (goal->timeLimit && world_.time() > *goal->timeLimit + 1e-9) return;
     bool reached = false;
+    // Where the goal happened and what did it: the hit that completed it, or the ball in the bucket.
+    Vec2 where;
+    std::string by;
     switch (goal->kind) {
     case GoalKind::targetHit: {
         const int target = find(goal->item);
@@ -209,15 +253,34 @@ void LevelRun::checkGoal() {
         break;
     case GoalKind::ballInBucket: {
         const int bucket = find(goal->item);
-        bucketRestSteps_ = bucket >= 0 && ballRestsIn(items_[static_cast<std::size_t>(bucket)]) ? bucketRestSteps_ + 1
-                                                                                                : 0;
+        const CircleId ball = bucket >= 0 ? ballRestingIn(items_[static_cast<std::size_t>(bucket)]) : CircleId{};
+        bucketRestSteps_ = ball.isNull() ? 0 : bucketRestSteps_ + 1;
         reached = static_cast<double>(bucketRestSteps_) * world_.def().timeStep >= kRestSeconds;
+        if (reached) {
+            where = world_.circle(ball).position;
+            by = nameOf(ball);
+        }
         break;
     }
     }
     if (!reached) return;
-    goalFrame_ = frame();
-    events_.push_back({EventKind::goal, frame(), world_.time(), goal->item, {}, 0});
+    if (goal->kind != GoalKind::ballInBucket) {
+        // The hit that completed it: the latest on the goal's target, or on any goal target.
+        for (auto e = events_.rbegin(); e != events_.rend(); ++e) {
+            if (e->kind != EventKind::hit) continue;
+            const int item = find(e->item);
+            const bool counts = goal->kind == GoalKind::targetHit
+                                    ? e->item == goal->item
+                                    : item >= 0 &&
+                                          items_[static_cast<std::size_t>(item)].kind->plays(PartRole::goalTarget);
+            if (!counts) continue;
+            where = e->position;
+            by = e->by;
+            break;
+        }
+    }
+    goalStep_ = steps();
+    events_.push_back({EventKind::goal, steps(), world_.time(), goal->item, where, 0, by});
 }
 
 } // namespace rube::game

@@ -21,11 +21,13 @@ enum class EventKind : std::uint8_t { hit, shot, explosion, goal };
 /// One thing that happened, for the summary and the expectations.
 struct GameEvent {
     EventKind kind = EventKind::hit;
-    std::int64_t frame = 0; ///< steps taken when it happened (the step it happened in)
-    double time = 0.0;      ///< world time, s
-    std::string item;       ///< the target, switch, cannon or bomb's name
-    Vec2 position;          ///< hits: the point of impact; shots: the muzzle; explosions: the centre
-    int count = 0;          ///< explosions: bodies pushed
+    std::int64_t step = 0; ///< steps taken when it happened (the step it happened in)
+    double time = 0.0;     ///< world time, s
+    std::string item;      ///< the target, switch, cannon or bomb's name
+    Vec2 position;         ///< hits: the point of impact; shots: the muzzle; explosions: the centre; the goal:
+                           ///< where it was reached (the hit's point, the ball resting in the bucket)
+    int count = 0;         ///< explosions: bodies pushed
+    std::string by;        ///< hits and the goal: what did it (LevelRun::nameOf), "" when unnamed
 };
 
 /// Which of the World's bodies is an item's, and what has happened to it.
@@ -38,6 +40,10 @@ struct ItemState {
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
     int field = -1; ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
 };
+
+/// Steps a level runs when nothing says otherwise: its goal's time limit rounded up to whole steps,
+/// else the scene's duration (SceneDesc::defaultSteps).
+std::int64_t levelSteps(const SceneDesc& level);
 
 /// A level in play. Placements must have passed checkPlacements().
 class LevelRun {
@@ -56,10 +62,10 @@ public:
     const std::vector<ItemState>& states() const { return states_; }
     /// Everything that happened so far, in order.
     const std::vector<GameEvent>& events() const { return events_; }
-    /// Steps taken so far (the frame number with --every 1).
-    std::int64_t frame() const { return world_.stats().steps; }
+    /// Steps taken so far.
+    std::int64_t steps() const { return world_.stats().steps; }
     /// The step in which the goal was reached, if it has been.
-    std::optional<std::int64_t> goalFrame() const { return goalFrame_; }
+    std::optional<std::int64_t> goalStep() const { return goalStep_; }
     /// The level's goal, if it has one.
     const std::optional<Goal>& goal() const { return scene_.level.goal; }
     /// The index of the item called `name`, or -1.
@@ -68,6 +74,11 @@ public:
     int itemOf(CircleId circle) const;
     /// True when World circle `circle` was shot from a cannon.
     bool isProjectile(CircleId circle) const;
+    /// Who World circle `circle` is, as an expectation's `by` names it: its item's name, the name of
+    /// the cannon that shot it, or the scene's [[circle]] name; "" when it has none.
+    std::string nameOf(CircleId circle) const;
+    /// The name of the World's rigid body in `slot` (the scene's [[box]] or [[capsule]]), "" when unnamed.
+    std::string bodyName(int slot) const;
     /// The scene the level was built from.
     const SceneDesc& scene() const { return scene_; }
 
@@ -107,7 +118,7 @@ public:
 private:
     void addItem(const ItemDesc& item);
     void checkGoal();
-    bool ballRestsIn(const ItemDesc& bucket) const;
+    CircleId ballRestingIn(const ItemDesc& bucket) const;
 
     SceneDesc scene_;
     World world_;
@@ -115,7 +126,7 @@ private:
     std::vector<ItemState> states_;
     std::vector<RopeId> ropes_; // the scene's [[rope]] i (SceneDesc::ropes) -> its rope in the World
     std::vector<GameEvent> events_;
-    std::optional<std::int64_t> goalFrame_;
+    std::optional<std::int64_t> goalStep_;
     std::int64_t bucketRestSteps_ = 0; // consecutive steps a ball has rested in the goal's bucket
 };
 

@@ -24,7 +24,9 @@ constexpr float kThinLine = 3.0f;      // pixels: a zero-thickness wall
 constexpr double kArrowSeconds = 0.15; // a projectile's arrow shows where it will be this much later
 constexpr int kHudMargin = 8;
 constexpr int kHudScale = 2;
-constexpr int kHudLineHeight = 18; // pixels between the HUD's two lines
+constexpr int kHudLineHeight = 18; // pixels between the HUD's lines
+constexpr int kGoalLines = 2;      // the goal's text wraps onto at most this many lines
+constexpr int kLabelScale = 1;     // item labels: small, beside the item
 
 Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v.y)}; }
 
@@ -35,8 +37,47 @@ Style style(const char* fill, const char* outline, float width = kOutline) {
 
 } // namespace
 
-LevelView::LevelView(std::string levelName, render::Camera camera, render::FrameSize frame)
-    : levelName_(std::move(levelName)), camera_(camera), frame_(frame) {}
+void drawZones(const LevelDesc& level, render::DrawList& list) {
+    const Palette& palette = Palette::greybox();
+    for (const Zone& zone : level.zones) {
+        const Point centre = pt((zone.box.min + zone.box.max) * 0.5);
+        const Point half = pt((zone.box.max - zone.box.min) * 0.5);
+        list.box(centre, half, 0.0f, {palette["goal"].withAlpha(0x30), palette["goal"], 1.5f});
+    }
+}
+
+std::vector<std::string> wrapText(const std::string& text, int width, int scale, int maxLines) {
+    std::vector<std::string> lines;
+    std::string line;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t space = text.find(' ', at);
+        const std::string word = text.substr(at, space == std::string::npos ? std::string::npos : space - at);
+        at = space == std::string::npos ? text.size() : space + 1;
+        const std::string longer = line.empty() ? word : line + " " + word;
+        if (line.empty() || render::textWidth(longer, scale) <= width) {
+            line = longer;
+            continue;
+        }
+        lines.push_back(line);
+        line = word;
+    }
+    if (!line.empty() || lines.empty()) lines.push_back(line);
+    if (static_cast<int>(lines.size()) <= maxLines &&
+        std::all_of(lines.begin(), lines.end(),
+                    [&](const std::string& l) { return render::textWidth(l, scale) <= width; }))
+        return lines;
+    // Too long: keep what fits and say so with "..." at the end of the last line kept.
+    lines.resize(std::min<std::size_t>(lines.size(), static_cast<std::size_t>(std::max(1, maxLines))));
+    std::string& last = lines.back();
+    while (!last.empty() && render::textWidth(last + "...", scale) > width) last.pop_back();
+    while (!last.empty() && last.back() == ' ') last.pop_back();
+    last += "...";
+    return lines;
+}
+
+LevelView::LevelView(std::string levelName, render::Camera camera, render::FrameSize frame, LevelViewOptions options)
+    : levelName_(std::move(levelName)), camera_(camera), frame_(frame), options_(options) {}
 
 void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
     const World& world = run.world();
@@ -75,33 +116,65 @@ void LevelView::drawItems(const LevelRun& run, render::DrawList& list) const {
 std::string LevelView::goalLine(const LevelRun& run) const {
     if (!run.goal()) return "no goal";
     // The status first, so a long goal text cut off at the frame's edge never hides it.
-    if (run.goalFrame()) return "REACHED at frame " + std::to_string(*run.goalFrame()) + ": " + run.goal()->text;
+    if (run.goalStep()) return "REACHED at step " + std::to_string(*run.goalStep()) + ": " + run.goal()->text;
     return "goal: " + run.goal()->text;
 }
 
-void LevelView::drawHud(const LevelRun& run, std::int64_t frame, render::DrawList& list) const {
+std::vector<std::string> LevelView::goalLines(const LevelRun& run) const {
+    return wrapText(goalLine(run), frame_.width - 2 * kHudMargin, kHudScale, kGoalLines);
+}
+
+void LevelView::drawHud(const LevelRun& run, std::int64_t step, render::DrawList& list) const {
     const Palette& palette = Palette::greybox();
-    const float band = static_cast<float>(2 * kHudMargin + kHudLineHeight + 7 * kHudScale);
+    const std::vector<std::string> goal = goalLines(run);
+    const float band = static_cast<float>(2 * kHudMargin + kHudLineHeight * static_cast<int>(goal.size()) +
+                                          7 * kHudScale);
     const Point low = camera_.toWorld({0.0f, static_cast<float>(frame_.height) - band}, frame_);
     const Point high = camera_.toWorld({static_cast<float>(frame_.width), static_cast<float>(frame_.height)}, frame_);
     list.box({0.5f * (low.x + high.x), 0.5f * (low.y + high.y)}, {0.5f * (high.x - low.x), 0.5f * (high.y - low.y)},
              0.0f, {palette["background"].withAlpha(0xd8), render::Color::transparent(), 0.0f});
-    char line[256];
-    std::snprintf(line, sizeof line, "%s   frame %lld   t = %.3f s", levelName_.c_str(), static_cast<long long>(frame),
-                  run.world().time());
+    // The top line, as much of it as fits: the time goes first, then the level's name; the step stays.
+    char time[64];
+    std::snprintf(time, sizeof time, "   t = %.3f s", run.world().time());
+    const std::string stepWords = "step " + std::to_string(step);
+    std::string line = levelName_ + "   " + stepWords + time;
+    for (const std::string& shorter : {levelName_ + "   " + stepWords, stepWords})
+        if (render::textWidth(line, kHudScale) > frame_.width - 2 * kHudMargin) line = shorter;
     list.text(kHudMargin, kHudMargin, line, palette["hud_text"], kHudScale);
-    list.text(kHudMargin, kHudMargin + kHudLineHeight, goalLine(run),
-              run.goalFrame() ? palette["goal"] : palette["hud_text"], kHudScale);
+    for (std::size_t i = 0; i < goal.size(); ++i)
+        list.text(kHudMargin, kHudMargin + kHudLineHeight * static_cast<int>(i + 1), goal[i],
+                  run.goalStep() ? palette["goal"] : palette["hud_text"], kHudScale);
 }
 
-void LevelView::draw(const LevelRun& run, std::int64_t frame, render::DrawList& list) const {
+// Each named item's name just above its right shoulder, from its position now (a moving target's
+// label moves with it); in pixels from the top-left corner, as HUD text is.
+void LevelView::drawLabels(const LevelRun& run, render::DrawList& list) const {
+    const Palette& palette = Palette::greybox();
+    const float ppm = camera_.pixelsPerMetre(frame_);
+    for (std::size_t i = 0; i < run.items().size(); ++i) {
+        const ItemDesc& item = run.items()[i];
+        if (item.name.empty()) continue;
+        const int index = static_cast<int>(i);
+        const ItemState& state = run.states()[i];
+        const double radius = state.circle.isNull() ? 0.2 : run.world().circle(state.circle).radius;
+        const Point at = camera_.toPixels(pt(run.itemPosition(index)), frame_);
+        const int x = static_cast<int>(std::lround(at.x + static_cast<float>(radius) * ppm * 0.7f + 2.0f));
+        const int y = static_cast<int>(
+            std::lround(static_cast<float>(frame_.height) - at.y - static_cast<float>(radius) * ppm * 0.7f - 9.0f));
+        list.text(x, y, item.name, palette["hud_text"], kLabelScale);
+    }
+}
+
+void LevelView::draw(const LevelRun& run, std::int64_t step, render::DrawList& list) const {
     list.clear();
     list.background = Palette::greybox()["background"];
+    if (options_.zones) drawZones(run.scene().level, list);
     drawBodies(run, list);
     drawItems(run, list);
     // Water in front of balls and items, as in the scene view: a floating ball shows how deep it sits.
     drawWaters(run.world(), list);
-    drawHud(run, frame, list);
+    if (options_.labels) drawLabels(run, list);
+    drawHud(run, step, list);
 }
 
 } // namespace rube::game

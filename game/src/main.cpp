@@ -53,8 +53,16 @@ constexpr const char* kRunFooter =
     "  is shown only when stderr is a terminal.\n"
     "Picture: the camera is fixed for the run: the scene's [view] if it has one, else its\n"
     "  [world] bounds, else every body at the start with a margin. Dynamic balls are white,\n"
-    "  kinematic bodies light grey, static ones dark grey; the top line shows scene, frame,\n"
-    "  simulated time and method.\n"
+    "  kinematic bodies light grey, static ones dark grey; the top line shows scene, step,\n"
+    "  simulated time and method. A step is one step of the simulation, a frame one picture\n"
+    "  written (every K steps): frame n shows step n x K.\n"
+    "Levels: the summary and DIR/summary.json give the goal's step, time, position, what reached\n"
+    "  it and the frame that shows it, and every event by step; --labels writes item names and\n"
+    "  --zones draws the placement zones. A level's trace has the header\n"
+    "  step,time,body,item,x,y,vx,vy,angle,omega,radius: every dynamic body (circles c<slot>,\n"
+    "  boxes and capsules b<slot>, radius empty) with its item's name. --steps or --frames that\n"
+    "  stop the run before the level's time limit report an unmet expectation as 'not reached in\n"
+    "  time' (still exit 1); --method, --trails and --debug-impacts are for physics scenes only.\n"
     "Video: --video FILE.mp4 (H.264), .webm (VP9) or .gif (one palette made from the frames)\n"
     "  pipes the frames --out would write, as raw RGB, to ffmpeg (apt-get install ffmpeg), at\n"
     "  1 / (time step x K) frames a second: real time. The video appears under its name only\n"
@@ -76,7 +84,8 @@ constexpr const char* kCheckFooter =
     "Scripts: a file named NAME.solution.toml, or holding level, steps, [capture], [[place]],\n"
     "  [[action]] or [[expect]], is a solution script. It is checked against its level (--level\n"
     "  LEVEL, else NAME.toml beside it): every placement allowed, every item an action or\n"
-    "  expectation names exists and is of the right kind, actions in frame order.\n"
+    "  expectation names exists and is of the right kind, actions in step order. An old key gets\n"
+    "  its new name: 'frame' is now 'step', 'before_frame' is now 'before_step'.\n"
     "Levels are also linted, as 'file:line:col: warning: message': no [goal]; a zone outside the\n"
     "  [view] or the world's bounds; an inventory without a zone or zones without an inventory;\n"
     "  fixed items overlapping; and, run headless, a goal reached with nothing placed, or a\n"
@@ -92,10 +101,10 @@ constexpr const char* kPlayFooter =
     "Keys: Space runs the machine, R resets to editing with placements kept, P pauses, S slow\n"
     "  motion (a tenth of real time), D toggles trails, C clears them, Esc quits.\n"
     "Running: click a cannon to fire it, a bomb to set it off, a switch, fan or magnet to flip it.\n"
-    "Recording: --record FILE writes the placements, the aims (frame-0 actions), the actions taken\n"
+    "Recording: --record FILE writes the placements, the aims (step-0 actions), the actions taken\n"
     "  while running (at their step numbers) and, if the goal was reached, an expectation that it\n"
-    "  is reached again; 'rube run LEVEL --script FILE --out DIR' replays it off-screen, frame for\n"
-    "  frame (frame n is step n). The script records the session as it ends: after R, the edits.\n"
+    "  is reached again; 'rube run LEVEL --script FILE --out DIR' replays it off-screen, step for\n"
+    "  step. The script records the session as it ends: after R, the edits.\n"
     "Without a display, play says so: use 'rube run' or 'xvfb-run rube play LEVEL'.\n"
     "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, script, --record path).";
 
@@ -252,6 +261,8 @@ RunCommand::RunCommand(CLI::App& app) {
                            "Draw each dynamic ball's path over the last 2 s (debug key D)"),
         command_->add_flag("--debug-impacts", options_.debugImpacts,
                            "Mark points of impact with rings and collision normals with arrows (for 0.25 s)"),
+        command_->add_flag("--labels", options_.labels, "Levels: write each named item's name beside it"),
+        command_->add_flag("--zones", options_.zones, "Levels: draw the placement zones, as the play window does"),
         command_
             ->add_option("--gl", gl_, "Offscreen GL: egl, osmesa or auto (default: EGL where it starts, else OSMesa)")
             ->type_name("NAME")

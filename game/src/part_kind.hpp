@@ -171,8 +171,11 @@ public:
     virtual void beforeStep(LevelRun& run, int item) const { (void)run, (void)item; }
     /// After each step: its timers (a bomb's fuse, a cannon's fire_at).
     virtual void afterStep(LevelRun& run, int item) const { (void)run, (void)item; }
-    /// A ball touched it at `point`: targets and switches report it, a bomb on impact goes off.
-    virtual void hit(LevelRun& run, int item, Vec2 point) const { (void)run, (void)item, (void)point; }
+    /// A ball touched it at `point` (`by` names the ball, as LevelRun::nameOf does): targets and
+    /// switches report it, a bomb on impact goes off.
+    virtual void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const {
+        (void)run, (void)item, (void)point, (void)by;
+    }
     /// A switch named it, or a script's fire, detonate or toggle did: what it does then.
     virtual void trigger(LevelRun& run, int item) const { (void)run, (void)item; }
     /// The action a click on it takes while running, if any (fire, detonate, toggle).

@@ -17,11 +17,7 @@ render::Point pt(Vec2 v) { return {static_cast<float>(v.x), static_cast<float>(v
 
 void PlaySession::drawEditing(render::DrawList& list) const {
     const Palette& palette = Palette::greybox();
-    for (const Zone& zone : level_.level.zones) {
-        const Point centre = pt((zone.box.min + zone.box.max) * 0.5);
-        const Point half = pt((zone.box.max - zone.box.min) * 0.5);
-        list.box(centre, half, 0.0f, {palette["goal"].withAlpha(0x30), palette["goal"], 1.5f});
-    }
+    drawZones(level_.level, list);
     const auto outlineBodies = [&](const Placement& p, render::Style look) {
         const ItemBodies bodies = itemBodies(placedItem(p));
         for (const CircleDef& c : bodies.circles) list.circle(pt(c.position), static_cast<float>(c.radius), look);
@@ -42,9 +38,9 @@ void PlaySession::draw(render::DrawList& list) const {
     const Palette& palette = Palette::greybox();
     std::string modeLine;
     if (run_) {
-        view_.draw(*run_, run_->frame(), list);
+        view_.draw(*run_, run_->steps(), list);
         if (showTrails_) trails_->draw(list, palette["trail"], 2.0f);
-        modeLine = "RUN step " + std::to_string(run_->frame()) + (paused_ ? " PAUSED" : "") + (slow_ ? " SLOW" : "") +
+        modeLine = "RUN step " + std::to_string(run_->steps()) + (paused_ ? " PAUSED" : "") + (slow_ ? " SLOW" : "") +
                    "  P pause S slow D trails C clear R edit Esc quit";
     } else {
         view_.draw(*preview_, 0, list);

@@ -57,7 +57,7 @@ void PlaySession::load(const ScriptDesc& script) {
     aims_.clear();
     scripted_.clear();
     for (const Action& a : script.actions) {
-        if (a.frame == 0 && (a.kind == ActionKind::aim || a.kind == ActionKind::rotate))
+        if (a.step == 0 && (a.kind == ActionKind::aim || a.kind == ActionKind::rotate))
             aims_[level_.level.find(a.item)] = a;
         else scripted_.push_back(a);
     }
@@ -85,7 +85,7 @@ void PlaySession::start() {
     }
     aiming_ = -1;
     run_ = std::make_unique<LevelRun>(level_, placements_);
-    // The aims are the script's frame-0 actions, taken the way `rube run` takes them.
+    // The aims are the script's step-0 actions, taken the way `rube run` takes them.
     for (const auto& [item, action] : aims_) takeAction(action, *run_);
     actions_.clear();
     nextScripted_ = 0;
@@ -96,15 +96,15 @@ void PlaySession::start() {
     takeScripted();
 }
 
-// A loaded script's actions for the frame the run has reached, taken as soon as it is reached,
+// A loaded script's actions for the step the run has reached, taken as soon as it is reached,
 // so the frame drawn next shows them, as `rube run` records a frame after its actions.
 void PlaySession::takeScripted() {
-    for (; nextScripted_ < scripted_.size() && scripted_[nextScripted_].frame <= run_->frame(); ++nextScripted_) {
+    for (; nextScripted_ < scripted_.size() && scripted_[nextScripted_].step <= run_->steps(); ++nextScripted_) {
         Action a = scripted_[nextScripted_];
-        a.frame = run_->frame();
+        a.step = run_->steps();
         if (const std::string why = takeAction(a, *run_); !why.empty()) {
-            say("the script's " + std::string(actionVerb(a.kind)) + " " + a.item + " at frame " +
-                    std::to_string(a.frame) + ": " + why,
+            say("the script's " + std::string(actionVerb(a.kind)) + " " + a.item + " at step " +
+                    std::to_string(a.step) + ": " + why,
                 "magnet");
             continue;
         }
@@ -123,12 +123,12 @@ void PlaySession::reset() {
 
 void PlaySession::step() {
     if (!run_) return;
-    const bool reachedBefore = run_->goalFrame().has_value();
+    const bool reachedBefore = run_->goalStep().has_value();
     run_->step();
     trails_->record(run_->world());
     takeScripted();
-    if (!reachedBefore && run_->goalFrame())
-        say("GOAL REACHED at frame " + std::to_string(*run_->goalFrame()) + " - R edits again, Esc quits", "goal");
+    if (!reachedBefore && run_->goalStep())
+        say("GOAL REACHED at step " + std::to_string(*run_->goalStep()) + " - R edits again, Esc quits", "goal");
 }
 
 void PlaySession::advance(double seconds) {
@@ -148,12 +148,12 @@ void PlaySession::advance(double seconds) {
 
 void PlaySession::takeByHand(ActionKind kind, int item) {
     Action a;
-    a.frame = run_->frame();
+    a.step = run_->steps();
     a.kind = kind;
     a.item = level_.level.items[static_cast<std::size_t>(item)].name;
     takeAction(a, *run_);
     actions_.push_back(a);
-    say(std::string(actionVerb(kind)) + " " + a.item + " at frame " + std::to_string(a.frame));
+    say(std::string(actionVerb(kind)) + " " + a.item + " at step " + std::to_string(a.step));
 }
 
 void PlaySession::useItemAtCursor() {
@@ -182,17 +182,17 @@ std::string PlaySession::recordedScript() const {
     script.placements = placements_;
     for (const auto& [item, action] : aims_) {
         script.actions.push_back(action);
-        script.actions.back().frame = 0;
+        script.actions.back().step = 0;
     }
     script.actions.insert(script.actions.end(), actions_.begin(), actions_.end());
-    if (run_ && run_->goalFrame()) {
+    if (run_ && run_->goalStep()) {
         Expectation goal;
         goal.kind = EventKind::goal;
-        goal.beforeFrame = *run_->goalFrame() + 1;
+        goal.beforeStep = *run_->goalStep() + 1;
         script.expectations.push_back(goal);
     }
     return writeScript(script, "# Recorded by `rube play` at level '" + level_.name +
-                                   "'. Replay it off-screen, frame for frame:\n"
+                                   "'. Replay it off-screen, step for step:\n"
                                    "#   rube run " +
                                    levelPath_ + " --script THIS_FILE --out DIR\n");
 }

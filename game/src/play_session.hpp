@@ -31,7 +31,7 @@ public:
     /// window whose level area is `levelFrame` pixels with the inventory bar below it.
     PlaySession(SceneDesc level, std::string levelPath, render::FrameSize levelFrame);
 
-    /// Starts from a script: its placements; its frame-0 aims and rotations as the cannons' aims
+    /// Starts from a script: its placements; its step-0 aims and rotations as the cannons' aims
     /// (which the player may change); and its other actions, taken at their frames in every run
     /// (and recorded like the player's own).
     void load(const ScriptDesc& script);
@@ -85,7 +85,7 @@ public:
     /// The bar's message line: why a placement was refused, what was done, or the goal's state.
     const std::string& message() const { return message_; }
 
-    /// The session as a playthrough script: the placements, the aims as frame-0 actions, the
+    /// The session as a playthrough script: the placements, the aims as step-0 actions, the
     /// actions of the present (or last) run at their frames, and, if the goal was reached, an
     /// expectation that it is reached again. `rube run LEVEL --script FILE` replays it.
     std::string recordedScript() const;
@@ -117,11 +117,11 @@ private:
     InventoryBar bar_;
     LevelView view_;
     std::vector<Placement> placements_;
-    std::map<int, Action> aims_;        // cannon item -> its frame-0 aim, set while editing
+    std::map<int, Action> aims_;        // cannon item -> its step-0 aim, set while editing
     std::unique_ptr<LevelRun> preview_; // the machine at step 0, as placed (editing)
     std::unique_ptr<LevelRun> run_;     // the machine running
     std::vector<Action> actions_;       // taken in the present run, by hand or from a loaded script
-    std::vector<Action> scripted_;      // a loaded script's actions other than its frame-0 aims
+    std::vector<Action> scripted_;      // a loaded script's actions other than its step-0 aims
     std::size_t nextScripted_ = 0;      // the first of them not yet taken in this run
     std::optional<Drag> drag_;
     int aiming_ = -1;      // the cannon being aimed by dragging, or -1

@@ -129,9 +129,9 @@ ExitCode playInWindow(const PlayOptions& options, std::ostream& out, std::ostrea
         out << "frame rate:       " << text << '\n';
     }
     if (const LevelRun* run = session.run()) {
-        out << "steps:            " << run->frame() << '\n';
+        out << "steps:            " << run->steps() << '\n';
         out << "goal:             "
-            << (run->goalFrame() ? "reached at frame " + std::to_string(*run->goalFrame()) : std::string("not reached"))
+            << (run->goalStep() ? "reached at step " + std::to_string(*run->goalStep()) : std::string("not reached"))
             << '\n';
     }
     if (!options.record.empty()) {

@@ -153,6 +153,11 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
             << ": a level runs by its own [world] method and is drawn as the game draws it\n";
         return ExitCode::badInput;
     }
+    if (!asLevel && (options.labels || options.zones)) {
+        err << "rube run: " << (options.labels ? "--labels" : "--zones") << " is for levels, and " << options.scene
+            << " is a physics scene: it has no items or placement zones\n";
+        return ExitCode::badInput;
+    }
     if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
         err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules "
             << (scene.joints.empty() ? "or pivots" : "pivots or joints") << " of " << options.scene
@@ -205,7 +210,7 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
     }
     auto progress = std::make_unique<ProgressLine>(err, recording && options.progress, frames.total);
     const auto recordFrame = [&] {
-        frames.view->draw(world, frames.done, frames.list);
+        frames.view->draw(world, frames.list);
         frames.recorder->record(frames.list, frames.view->camera(), frames.done);
         ++frames.done;
         progress->update(frames.done, frames.recorder->elapsedSeconds());

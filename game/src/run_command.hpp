@@ -44,6 +44,8 @@ struct RunOptions {
     render::FrameSize size{1280, 720};                   ///< --size, pixels
     bool trails = false;                                 ///< --trails: each dynamic body's recent path
     bool debugImpacts = false;                           ///< --debug-impacts: points of impact and collision normals
+    bool labels = false;                                 ///< --labels: levels' item names beside the items
+    bool zones = false;                                  ///< --zones: levels' placement zones
     bool progress = false;                               ///< show a progress line on `err` (only when it is a terminal)
 };
 

@@ -69,10 +69,12 @@ void SceneView::afterStep(const World& world) {
     if (impacts_) impacts_->record(world);
 }
 
-std::string SceneView::hudLine(const World& world, std::int64_t frame) const {
+std::string SceneView::hudLine(const World& world) const {
+    // The step, not the frame's number: frame n of a run with --every K shows step n x K.
     char line[256];
-    std::snprintf(line, sizeof line, "%s   frame %lld   t = %.3f s   %s", sceneName_.c_str(),
-                  static_cast<long long>(frame), world.time(), std::string(methodName(world.def().method)).c_str());
+    std::snprintf(line, sizeof line, "%s   step %lld   t = %.3f s   %s", sceneName_.c_str(),
+                  static_cast<long long>(world.stats().steps), world.time(),
+                  std::string(methodName(world.def().method)).c_str());
     return line;
 }
 
@@ -138,7 +140,7 @@ void SceneView::drawHud(const std::string& line, render::DrawList& list) const {
     list.text(kHudMargin, kHudMargin, line, palette["hud_text"], scale);
 }
 
-void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& list) const {
+void SceneView::draw(const World& world, render::DrawList& list) const {
     const Palette& palette = Palette::greybox();
     list.clear();
     list.background = palette["background"];
@@ -156,7 +158,7 @@ void SceneView::draw(const World& world, std::int64_t frame, render::DrawList& l
     drawWaters(world, list);
     if (impacts_)
         impacts_->draw(list, world.time(), camera_.pixelsPerMetre(frame_), palette["impact"], palette["arrow"]);
-    drawHud(hudLine(world, frame), list);
+    drawHud(hudLine(world), list);
 }
 
 } // namespace rube::game

@@ -54,15 +54,15 @@ public:
 
     /// Records what the overlays need from the step just taken.
     void afterStep(const World& world);
-    /// Clears `list` and fills it with the world as it is now, for frame number `frame`.
-    void draw(const World& world, std::int64_t frame, render::DrawList& list) const;
+    /// Clears `list` and fills it with the world as it is now.
+    void draw(const World& world, render::DrawList& list) const;
 
     /// The camera every frame is drawn through.
     const render::Camera& camera() const { return camera_; }
     /// The size of the frames, in pixels.
     render::FrameSize frameSize() const { return frame_; }
-    /// The HUD line of frame `frame`: scene, frame number, simulated time, method.
-    std::string hudLine(const World& world, std::int64_t frame) const;
+    /// The HUD line: scene, steps taken, simulated time, method.
+    std::string hudLine(const World& world) const;
 
 private:
     void drawSegments(const World& world, render::DrawList& list) const;

@@ -20,11 +20,14 @@ constexpr std::string_view kTopKeys[] = {"level", "steps", "capture", "place", "
 constexpr std::string_view kCaptureKeys[] = {"size", "every"};
 constexpr std::string_view kPlaceKeys[] = {"kind", "position", "angle", "name"};
 constexpr std::string_view kDoNames[] = {"rotate", "aim", "fire", "detonate", "toggle", "fire-when", "cut"};
-constexpr std::string_view kRotateKeys[] = {"frame", "do", "item", "angle"};
-constexpr std::string_view kAimKeys[] = {"frame", "do", "item", "angle", "point", "target", "arc"};
-constexpr std::string_view kItemKeys[] = {"frame", "do", "item"};
-constexpr std::string_view kFireWhenKeys[] = {"frame", "do", "item", "target"};
-constexpr std::string_view kExpectKeys[] = {"goal", "hit", "shot", "explosion", "before_frame"};
+constexpr std::string_view kRotateKeys[] = {"step", "do", "item", "angle"};
+constexpr std::string_view kAimKeys[] = {"step", "do", "item", "angle", "point", "target", "arc"};
+constexpr std::string_view kItemKeys[] = {"step", "do", "item"};
+constexpr std::string_view kFireWhenKeys[] = {"step", "do", "item", "target"};
+constexpr std::string_view kExpectKeys[] = {"goal", "hit", "shot", "explosion", "by", "before_step"};
+// Issue 23: a step is a simulation step, a frame a written picture; scripts said "frame" for steps.
+constexpr KeyRename kActionRenames[] = {{"frame", "step"}};
+constexpr KeyRename kExpectRenames[] = {{"before_frame", "before_step"}};
 constexpr std::string_view kArcNames[] = {"low", "high"};
 // The longest run a script may ask for: an hour at 60 steps a second.
 constexpr std::int64_t kMaxSteps = 216'000;
@@ -36,6 +39,20 @@ bool checkItem(TableReader& table, std::string_view key, const std::string& name
     if (message.empty()) return true;
     table.error(table.valuePlace(key), std::move(message));
     return false;
+}
+
+// An expectation's `by` names a ball: an item or placement (a cannon for its shots), or a named [[circle]].
+void checkStriker(TableReader& expect, const std::string& name, const SceneDesc& level) {
+    std::vector<std::string_view> names;
+    for (const ItemDesc& item : level.level.items)
+        if (!item.name.empty()) names.push_back(item.name);
+    for (const std::string& circle : level.circleNames)
+        if (!circle.empty()) names.push_back(circle);
+    for (const std::string& body : level.bodyNames)
+        if (!body.empty()) names.push_back(body);
+    if (std::find(names.begin(), names.end(), name) != names.end()) return;
+    expect.error(expect.valuePlace("by"), "unknown item, circle or body '" + name + "' in level '" + level.name + "'" +
+                                              unknownNameHint(name, names, "the level has", "the level names nothing"));
 }
 
 void readCapture(TableReader& root, ScriptDesc& script) {
@@ -146,19 +163,19 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
                                                        ? std::span<const std::string_view>(kFireWhenKeys)
                                                        : std::span<const std::string_view>(kItemKeys);
     TableReader action(table, "in [[action]]",
-                       index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag);
+                       index < std::size(kDoNames) ? keys : std::span<const std::string_view>(kAimKeys), diag, {}, {},
+                       kActionRenames);
     if (!action.choice("do", kDoNames, Need::required)) return;
     Action a;
     a.kind = kind;
     a.place = action.tablePlace();
-    a.frame = action.integer("frame", 0, kMaxSteps, Need::required).value_or(0);
+    a.step = action.integer("step", 0, kMaxSteps, Need::required).value_or(0);
     // A script reads as a timeline: an action listed after a later one is almost always a slip
-    // (a frame number typed wrong), and taking it silently would play something else.
-    if (!script.actions.empty() && a.frame < script.actions.back().frame)
-        action.error(action.valuePlace("frame"), "actions must be listed in frame order: frame " +
-                                                     std::to_string(a.frame) + " comes after frame " +
-                                                     std::to_string(script.actions.back().frame) + " (line " +
-                                                     std::to_string(script.actions.back().place.line) + ")");
+    // (a step number typed wrong), and taking it silently would play something else.
+    if (!script.actions.empty() && a.step < script.actions.back().step)
+        action.error(action.valuePlace("step"), "actions must be listed in step order: step " + std::to_string(a.step) +
+                                                    " comes after step " + std::to_string(script.actions.back().step) +
+                                                    " (line " + std::to_string(script.actions.back().place.line) + ")");
     a.item = action.string("item", Need::required).value_or("");
     if (a.item.empty()) return;
     switch (kind) {
@@ -212,10 +229,10 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
 
 void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& script) {
     for (const toml::table* table : root.arrayOfTables("expect")) {
-        TableReader expect(*table, "in [[expect]]", kExpectKeys, root.diagnostics());
+        TableReader expect(*table, "in [[expect]]", kExpectKeys, root.diagnostics(), {}, {}, kExpectRenames);
         Expectation e;
         e.place = expect.tablePlace();
-        const auto before = expect.integer("before_frame", 1, kMaxSteps, Need::required);
+        const auto before = expect.integer("before_step", 1, kMaxSteps, Need::required);
         const int ways = (expect.find("goal") ? 1 : 0) + (expect.find("hit") ? 1 : 0) + (expect.find("shot") ? 1 : 0) +
                          (expect.find("explosion") ? 1 : 0);
         if (ways != 1) {
@@ -240,7 +257,15 @@ void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& scr
             e.item = *boom;
             checkItem(expect, "explosion", *boom, level, PartRole::detonate);
         }
-        if (before) e.beforeFrame = *before;
+        if (const auto by = expect.string("by")) {
+            e.by = *by;
+            if (e.kind != EventKind::hit && e.kind != EventKind::goal)
+                expect.error(expect.valuePlace("by"), std::string("by names what must hit or reach the goal; ") +
+                                                          (e.kind == EventKind::shot ? "a shot" : "an explosion") +
+                                                          " has no by");
+            else checkStriker(expect, e.by, level);
+        }
+        if (before) e.beforeStep = *before;
         script.expectations.push_back(e);
     }
 }
@@ -250,7 +275,7 @@ void readExpectations(TableReader& root, const SceneDesc& level, ScriptDesc& scr
 double scriptRadians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
 std::string Expectation::describe() const {
-    const std::string when = " before frame " + std::to_string(beforeFrame);
+    const std::string when = (by.empty() ? "" : " by '" + by + "'") + " before step " + std::to_string(beforeStep);
     switch (kind) {
     case EventKind::goal: return "goal reached" + when;
     case EventKind::hit: return "'" + item + "' hit" + when;
@@ -343,8 +368,8 @@ void writePlacement(std::ostream& out, const Placement& p) {
 }
 
 void writeAction(std::ostream& out, const Action& a) {
-    out << "\n[[action]]\nframe = " << a.frame << "\ndo = \"" << actionVerb(a.kind)
-        << "\"\nitem = " << tomlString(a.item) << '\n';
+    out << "\n[[action]]\nstep = " << a.step << "\ndo = \"" << actionVerb(a.kind) << "\"\nitem = " << tomlString(a.item)
+        << '\n';
     if (a.angle) out << "angle = " << scriptNumber(a.angleDegrees) << '\n';
     if (a.point) out << "point = [" << scriptNumber(a.point->x) << ", " << scriptNumber(a.point->y) << "]\n";
     if (!a.target.empty()) out << "target = " << tomlString(a.target) << '\n';
@@ -361,7 +386,8 @@ void writeExpectation(std::ostream& out, const Expectation& e) {
     case EventKind::shot: out << "shot = " << tomlString(e.item) << '\n'; break;
     case EventKind::explosion: out << "explosion = " << tomlString(e.item) << '\n'; break;
     }
-    out << "before_frame = " << e.beforeFrame << '\n';
+    if (!e.by.empty()) out << "by = " << tomlString(e.by) << '\n';
+    out << "before_step = " << e.beforeStep << '\n';
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #pragma once
 /// Script files (levels/NAME.solution.toml): a scripted playthrough of one level — the player's
-/// placements, frame-indexed actions, expectations about what must happen, and capture settings.
+/// placements, actions at given steps, expectations about what must happen, and capture settings.
+/// A step is one step of the simulation; a frame is a written picture ([capture] every = K steps).
 
 #include "level_run.hpp"
 
@@ -17,9 +18,9 @@ namespace rube::game {
 /// What an action does.
 enum class ActionKind : std::uint8_t { rotate, aim, fire, detonate, toggle, fireWhen, cut };
 
-/// One action, taken when the run has taken `frame` steps (before the next one).
+/// One action, taken when the run has taken `step` steps (before the next one).
 struct Action {
-    std::int64_t frame = 0; ///< steps taken before it happens
+    std::int64_t step = 0; ///< steps taken before it happens
     ActionKind kind = ActionKind::fire;
     std::string item;            ///< the cannon, bomb or switch it acts on, or the rope it cuts
     std::optional<double> angle; ///< rotate, aim: radians
@@ -30,13 +31,14 @@ struct Action {
     SourcePlace place;           ///< where the script wrote it
 };
 
-/// An assertion about the run: an event must happen before a frame.
+/// An assertion about the run: an event must happen before a step.
 struct Expectation {
     EventKind kind = EventKind::goal; ///< hit, shot, explosion or goal
     std::string item;                 ///< the target, cannon or bomb (empty for the goal)
-    std::int64_t beforeFrame = 0;     ///< it must happen in a step before this frame number
+    std::string by;                   ///< hit, goal: what must do it (GameEvent::by), empty for anything
+    std::int64_t beforeStep = 0;      ///< it must happen with fewer steps taken than this
     SourcePlace place;                ///< where the script wrote it
-    /// "target 'T' hit before frame 600".
+    /// "'flag' hit by 'ball' before step 600".
     std::string describe() const;
 };
 
@@ -47,7 +49,7 @@ struct ScriptDesc {
     std::optional<render::FrameSize> size; ///< [capture] size of the frames
     std::optional<std::int64_t> every;     ///< [capture] steps between frames
     std::vector<Placement> placements;     ///< [[place]] in file order
-    std::vector<Action> actions;           ///< [[action]] sorted by frame, file order within a frame
+    std::vector<Action> actions;           ///< [[action]] sorted by step, file order within a step
     std::vector<Expectation> expectations; ///< [[expect]] in file order
 };
 

@@ -76,12 +76,22 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
 }
 
 TableReader::TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known,
-                         Diagnostics& diag, std::span<const KeyHome> homes, std::span<const std::string_view> unlisted)
-    : table_(table), where_(std::move(where)), diag_(diag) {
+                         Diagnostics& diag, std::span<const KeyHome> homes, std::span<const std::string_view> unlisted,
+                         std::span<const KeyRename> renamed)
+    : table_(table), where_(std::move(where)), diag_(diag), renamed_(renamed) {
     for (auto&& [key, value] : table_) {
         const std::string_view name = key.str();
         if (std::find(known.begin(), known.end(), name) != known.end()) continue;
         if (std::find(unlisted.begin(), unlisted.end(), name) != unlisted.end()) continue;
+        const auto rename = std::find_if(renamed.begin(), renamed.end(),
+                                         [&](const KeyRename& r) { return r.old == name; });
+        if (rename != renamed.end()) {
+            // Appended piece by piece: GCC 12's -Wrestrict misfires on "'" + std::string(...).
+            std::string message = "'";
+            message.append(name).append("' is now '").append(rename->now).append("' ").append(where_);
+            diag_.error(placeOf(key.source()), std::move(message));
+            continue;
+        }
         std::string message = "unknown key '" + std::string(name) + "' " + where_;
         const auto home = std::find_if(homes.begin(), homes.end(), [&](const KeyHome& h) { return h.key == name; });
         if (home != homes.end()) message += " (it belongs in " + std::string(home->home) + ")";
@@ -101,7 +111,10 @@ void TableReader::error(SourcePlace place, std::string message) { diag_.error(pl
 
 const toml::node* TableReader::get(std::string_view key, Need need) {
     const toml::node* node = find(key);
-    if (!node && need == Need::required)
+    // A key written under its old name has been reported as renamed; it is not missing as well.
+    const bool writtenAsOld = std::any_of(renamed_.begin(), renamed_.end(),
+                                          [&](const KeyRename& r) { return r.now == key && find(r.old); });
+    if (!node && need == Need::required && !writtenAsOld)
         error(tablePlace(), "missing required key '" + std::string(key) + "' " + where_);
     return node;
 }

@@ -68,6 +68,13 @@ struct KeyHome {
     std::string_view home; ///< the table it belongs in, as the message shows it: "[world]"
 };
 
+/// A key that was renamed, for the message "'frame' is now 'step' in [[action]]": an old file is told
+/// the new word rather than offered the nearest known key.
+struct KeyRename {
+    std::string_view old; ///< the key as files used to write it
+    std::string_view now; ///< the key it became
+};
+
 /// toml++ says "Error while parsing key-value pair: expected value"; this keeps its precise words but
 /// makes them read as one of ours, in scenes and scripts alike: "syntax error in key-value pair: expected value".
 std::string syntaxMessage(std::string_view description);
@@ -89,9 +96,11 @@ std::optional<double> readNumber(const toml::node& node, std::string_view what, 
 class TableReader {
 public:
     /// `where` ends the messages: "in [[circle]]", "in [world]", "at the top level". `unlisted` keys
-    /// are accepted but not offered in "known keys" lists (the level additions to physics tables).
+    /// are accepted but not offered in "known keys" lists (the level additions to physics tables);
+    /// a `renamed` key is reported with its new name, and the new one is then not also missing.
     TableReader(const toml::table& table, std::string where, std::span<const std::string_view> known, Diagnostics& diag,
-                std::span<const KeyHome> homes = {}, std::span<const std::string_view> unlisted = {});
+                std::span<const KeyHome> homes = {}, std::span<const std::string_view> unlisted = {},
+                std::span<const KeyRename> renamed = {});
 
     /// The value under `key`, or null.
     const toml::node* find(std::string_view key) const { return table_.get(key); }
@@ -135,6 +144,7 @@ private:
     const toml::table& table_;
     std::string where_;
     Diagnostics& diag_;
+    std::span<const KeyRename> renamed_;
 };
 
 } // namespace rube::game

@@ -33,7 +33,7 @@ void removeOrphanedTemporaries(const std::filesystem::path& target) {
 
 TraceWriter::~TraceWriter() { discard(); }
 
-bool TraceWriter::open(const std::filesystem::path& target, std::string& error) {
+bool TraceWriter::open(const std::filesystem::path& target, std::string& error, const char* header) {
     std::error_code ec;
     if (std::filesystem::is_directory(target, ec)) {
         error = target.string() + ": cannot write trace: it is a directory";
@@ -53,19 +53,55 @@ bool TraceWriter::open(const std::filesystem::path& target, std::string& error) 
     }
     // A large buffer: a pile of 1000 balls writes a row per ball per step.
     std::setvbuf(file_, nullptr, _IOFBF, 1 << 20);
-    std::fprintf(file_, "%s\n", kTraceHeader);
+    std::fprintf(file_, "%s\n", header);
     return true;
 }
 
-void TraceWriter::writeState(const World& world) {
-    if (!file_) return;
+namespace {
+
+// A name as one CSV field: quoted, with quotes doubled, when it holds a comma, quote or line break.
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+} // namespace
+
+void TraceWriter::writeCircles(const World& world, const std::function<std::string(CircleId)>* circleName) {
     const long long step = static_cast<long long>(world.stats().steps);
     const auto circles = world.circles();
     for (std::size_t i = 0; i < circles.size(); ++i) {
         const Circle& c = circles[i];
         if (c.motion != Motion::dynamic) continue;
-        std::fprintf(file_, "%lld,%.17g,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", step, world.time(), i,
-                     c.position.x, c.position.y, c.velocity.x, c.velocity.y, c.angle, c.angularVelocity, c.radius);
+        // A scene's row names the circle by its slot; a level's by c<slot> and its item's name.
+        if (circleName)
+            std::fprintf(file_, "%lld,%.17g,c%zu,%s,", step, world.time(), i,
+                         csvField((*circleName)(world.circleId(static_cast<int>(i)))).c_str());
+        else std::fprintf(file_, "%lld,%.17g,%zu,", step, world.time(), i);
+        std::fprintf(file_, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", c.position.x, c.position.y, c.velocity.x,
+                     c.velocity.y, c.angle, c.angularVelocity, c.radius);
+        ++rows_;
+    }
+}
+
+void TraceWriter::writeState(const World& world) {
+    if (file_) writeCircles(world, nullptr);
+}
+
+void TraceWriter::writeLevelState(const World& world, const std::function<std::string(CircleId)>& circleName,
+                                  const std::function<std::string(int)>& bodyName) {
+    if (!file_) return;
+    writeCircles(world, &circleName);
+    const long long step = static_cast<long long>(world.stats().steps);
+    const auto bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& b = bodies[i];
+        if (b.motion != Motion::dynamic) continue;
+        const std::string name = csvField(bodyName(static_cast<int>(i)));
+        std::fprintf(file_, "%lld,%.17g,b%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,\n", step, world.time(), i,
+                     name.c_str(), b.position.x, b.position.y, b.velocity.x, b.velocity.y, b.angle, b.angularVelocity);
         ++rows_;
     }
 }

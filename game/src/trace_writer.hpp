@@ -10,12 +10,17 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace rube::game {
 
 /// The trace's header line, without the newline.
 inline constexpr const char* kTraceHeader = "step,time,body,x,y,vx,vy,angle,omega,radius";
+/// A level's trace: every dynamic body, circles as `c<slot>` and boxes and capsules as `b<slot>`
+/// (radius empty), with the name of what it is in `item` (LevelRun::nameOf: the item, the cannon a
+/// shot came from, the scene's circle or box; empty when unnamed).
+inline constexpr const char* kLevelTraceHeader = "step,time,body,item,x,y,vx,vy,angle,omega,radius";
 
 /// Writes a trace into a temporary file beside its target and renames it into place only when the
 /// run has finished, so a failed or interrupted run never leaves a half-written trace behind.
@@ -27,11 +32,15 @@ public:
     TraceWriter(const TraceWriter&) = delete;
     TraceWriter& operator=(const TraceWriter&) = delete;
 
-    /// Creates the temporary file and writes the header; false, with `error` set, when it cannot.
+    /// Creates the temporary file and writes `header`; false, with `error` set, when it cannot.
     /// First removes the temporaries of this target left by runs whose process is gone (SIGKILL).
-    bool open(const std::filesystem::path& target, std::string& error);
+    bool open(const std::filesystem::path& target, std::string& error, const char* header = kTraceHeader);
     /// Appends one row per dynamic circle in the world's current state.
     void writeState(const World& world);
+    /// Appends a level trace's rows (kLevelTraceHeader): every dynamic circle, then every dynamic
+    /// rigid body, with `circleName(id)` and `bodyName(slot)` in the item column.
+    void writeLevelState(const World& world, const std::function<std::string(CircleId)>& circleName,
+                         const std::function<std::string(int)>& bodyName);
     /// Finishes the file and renames it onto the target; false, with `error` set, when that fails.
     bool commit(std::string& error);
     /// Deletes the temporary file; the target is left as it was.
@@ -40,6 +49,8 @@ public:
     std::int64_t rows() const { return rows_; }
 
 private:
+    void writeCircles(const World& world, const std::function<std::string(CircleId)>* circleName);
+
     std::FILE* file_ = nullptr;
     std::filesystem::path target_;
     std::filesystem::path temporary_;

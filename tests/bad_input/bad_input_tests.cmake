@@ -90,11 +90,11 @@ rube_bad_input_test("frame size 100000x100000" "run|${ramp}|--script|${ramp_solu
                     -DFRAMES_DIR=${RUBE_BAD_OUT}/size/frames -DNO_FRAMES_DIR=ON
                     "-DSTDERR_LINE=rube: --size: expected WxH in pixels, each from 1 to 8192, got '100000x100000' (see 'rube run --help')")
 
-# Actions out of frame order are an error at the later-listed action's frame, nothing is played.
+# Actions out of step order are an error at the later-listed action's step, nothing is played.
 file(WRITE ${RUBE_BAD_OUT}/cannon-arc-unordered.solution.toml
-     "level = \"cannon-arc\"\n\n[[action]]\nframe = 30\ndo = \"fire\"\nitem = \"gun\"\n\n"
-     "[[action]]\nframe = 0\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"high\"\n")
-rube_bad_input_test("actions out of frame order"
+     "level = \"cannon-arc\"\n\n[[action]]\nstep = 30\ndo = \"fire\"\nitem = \"gun\"\n\n"
+     "[[action]]\nstep = 0\ndo = \"aim\"\nitem = \"gun\"\ntarget = \"bullseye\"\narc = \"high\"\n")
+rube_bad_input_test("actions out of step order"
                     "run|${PROJECT_SOURCE_DIR}/levels/cannon-arc.toml|--script|${RUBE_BAD_OUT}/cannon-arc-unordered.solution.toml|--out|${RUBE_BAD_OUT}/unordered/frames" 2
                     -DFRAMES_DIR=${RUBE_BAD_OUT}/unordered/frames -DNO_FRAMES_DIR=ON
-                    "-DSTDERR_LINE=${RUBE_BAD_OUT}/cannon-arc-unordered.solution.toml:9:9: actions must be listed in frame order: frame 0 comes after frame 30 (line 3)")
+                    "-DSTDERR_LINE=${RUBE_BAD_OUT}/cannon-arc-unordered.solution.toml:9:8: actions must be listed in step order: step 0 comes after step 30 (line 3)")

@@ -170,7 +170,7 @@ endif()
 # is bad input (2) with the script's file:line:col.
 set(RUBE_GAME_LEVELS ${PROJECT_SOURCE_DIR}/levels)
 rube_cli_test("level ramp solved by its script" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml" 0
-              "-DSTDOUT_MATCH=goal: +reached at frame 266\n")
+              "-DSTDOUT_MATCH=goal: +reached at step 266\n")
 rube_cli_test("level ramp unsolved as it stands" "run|${RUBE_GAME_LEVELS}/ramp.toml" 1
               "-DSTDERR_LINE=rube run: goal not reached: hit the flag with the ball")
 rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_CLI_DIR}/levels/ramp-outside.solution.toml" 2
@@ -178,31 +178,45 @@ rube_cli_test("level placement outside the zone" "run|${RUBE_GAME_LEVELS}/ramp.t
 rube_cli_test("level script with an unknown cannon" "run|${RUBE_GAME_LEVELS}/cannon-arc.toml|--script|${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml" 2
               "-DSTDERR_LINE=${RUBE_CLI_DIR}/levels/cannon-typo.solution.toml:5:8: unknown cannon 'gnu' in level 'cannon-arc' (did you mean 'gun'?)")
 # The goal reached but an expectation missed is still a failed run (1), naming the expectation:
-# the ramp's ball reaches the flag at frame 266, so "before frame 100" cannot be met.
+# the ramp's ball reaches the flag at step 266, so "before step 100" cannot be met.
 set(early ${RUBE_CLI_OUT}/ramp-early.solution.toml)
 file(READ ${RUBE_GAME_LEVELS}/ramp.solution.toml early_text)
-file(WRITE ${early} "${early_text}\n[[expect]]\ngoal = true\nbefore_frame = 100\n")
+file(WRITE ${early} "${early_text}\n[[expect]]\ngoal = true\nbefore_step = 100\n")
 string(REGEX MATCHALL "\n" early_lines "${early_text}")
 list(LENGTH early_lines early_line)
 math(EXPR early_line "${early_line} + 2")
 rube_cli_test("level goal reached but an expectation missed" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${early}" 1
-              "-DSTDOUT_MATCH=goal: +reached at frame 266\n"
-              "-DSTDERR_LINE=${early}:${early_line}:1: expectation failed: goal reached before frame 100")
-# A level's run writes --trace as a scene's does: its one ball, steps + 1 rows (the goal at 266, then
-# 0.5 s at 1/100 s, so 316 steps). The options a level has no use for are refused, not ignored.
-rube_cli_test("level ramp --trace has steps + 1 rows" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--trace|${RUBE_CLI_OUT}/ramp.csv" 0
-              -DTRACE=${RUBE_CLI_OUT}/ramp.csv -DROWS=317 "-DSTDOUT_MATCH=steps: +316\n.*trace: +${RUBE_CLI_OUT}/ramp.csv \\(317 rows\\)")
+              "-DSTDOUT_MATCH=goal: +reached at step 266\n"
+              "-DSTDERR_LINE=${early}:${early_line}:1: expectation failed: goal reached before step 100")
+# A level's run writes --trace with every dynamic body and its item's name: the ramp's one ball (an
+# unnamed heavy ball, so its kind), steps + 1 rows (the goal at 266, then 0.5 s at 1/100 s, so 316
+# steps). With --no-render too. The options a level has no use for are refused, not ignored.
+rube_cli_test("level ramp --trace has steps + 1 rows" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--no-render|--trace|${RUBE_CLI_OUT}/ramp.csv" 0
+              -DTRACE=${RUBE_CLI_OUT}/ramp.csv -DLEVEL_ROWS=317 "-DTRACE_MATCH=\n316,3.16[0-9]*,c[0-9]+,heavy,"
+              "-DSTDOUT_MATCH=steps: +316\n.*trace: +${RUBE_CLI_OUT}/ramp.csv \\(317 rows\\)")
+# Every dynamic body: the crates level's two crates (boxes) are rows too, named as the level names them,
+# beside its steel ball: 3 rows a step.
+rube_cli_test("level crates --trace has the boxes, named" "run|${RUBE_GAME_LEVELS}/crates.toml|--script|${RUBE_GAME_LEVELS}/crates.solution.toml|--no-render|--steps|10|--trace|${RUBE_CLI_OUT}/crates.csv" 1
+              -DTRACE=${RUBE_CLI_OUT}/crates.csv -DLEVEL_ROWS=33 "-DTRACE_MATCH=\n10,[^\n]*,b0,crate,[^\n]*\n10,[^\n]*,b1,last-crate,")
 rube_cli_test("level with --method is refused" "run|${RUBE_GAME_LEVELS}/ramp.toml|--method|exact" 2
               "-DSTDERR_LINE=rube run: --method is for physics scenes, and ${RUBE_GAME_LEVELS}/ramp.toml is a level: a level runs by its own [world] method and is drawn as the game draws it")
 rube_cli_test("level with --trails is refused" "run|${RUBE_GAME_LEVELS}/ramp.toml|--out|${frames}/trails|--trails" 2
               -DFRAMES_DIR=${frames}/trails -DNO_FRAMES_DIR=ON
               "-DSTDERR_LINE=rube run: --trails is for physics scenes, and ${RUBE_GAME_LEVELS}/ramp.toml is a level: a level runs by its own [world] method and is drawn as the game draws it")
+rube_cli_test("level with --debug-impacts is refused" "run|${RUBE_GAME_LEVELS}/ramp.toml|--out|${frames}/impacts|--debug-impacts" 2
+              -DFRAMES_DIR=${frames}/impacts -DNO_FRAMES_DIR=ON
+              "-DSTDERR_LINE=rube run: --debug-impacts is for physics scenes, and ${RUBE_GAME_LEVELS}/ramp.toml is a level: a level runs by its own [world] method and is drawn as the game draws it")
 # The summary of a level's run: the goal frame, then every event in order with its frame and item.
 # The balloon's chain: the switch is hit and fires the cannon in one step, then the shot hits the target.
-rube_cli_test("level balloon summary.json has the goal frame and the hits"
-              "run|${RUBE_GAME_LEVELS}/balloon.toml|--script|${RUBE_GAME_LEVELS}/balloon.solution.toml|--out|${frames}/balloon|--size|32x18" 0
-              -DFRAMES_DIR=${frames}/balloon "-DSTDOUT_MATCH=goal: +reached at frame 277\n.*summary in ${frames}/balloon/summary.json"
-              "-DSUMMARY_MATCH=\"goal_reached\": true,\n  \"goal_frame\": 277,.*\"kind\": \"hit\", \"frame\": 95, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\].*\"kind\": \"shot\", \"frame\": 95, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"frame\": 277, [^\n]*\"item\": \"bullseye\".*\"kind\": \"goal\", \"frame\": 277,.*\"expect\": \"'bullseye' hit before frame 400\", \"met\": true")
+# Steps and frames (issue 23): the summary counts steps; summary.json also gives the time step, --every,
+# the frame size and count, and the goal's step, time, the frame file that shows it (step 277 with a
+# frame every 4 steps: frame 70, the first at or after it), where it happened (the bullseye's hit,
+# not [0, 0]) and what did it (the gun's shot).
+rube_cli_test("level balloon summary.json has the goal step, its frame and the hits"
+              "run|${RUBE_GAME_LEVELS}/balloon.toml|--script|${RUBE_GAME_LEVELS}/balloon.solution.toml|--out|${frames}/balloon|--size|32x18|--every|4" 0
+              -DFRAMES_DIR=${frames}/balloon
+              "-DSTDOUT_MATCH=goal: +reached at step 277 \\(frame_00070.png\\)\n.*frames: +82 of 32x18, one every 4 steps, in ${frames}/balloon \\(summary in ${frames}/balloon/summary.json"
+              "-DSUMMARY_MATCH=\"steps\": 327,\n  \"time_step\": 0.01,\n  \"time\": 3.27,\n  \"every\": 4,\n  \"frame_size\": \\[32, 18\\],\n  \"frames_written\": 82,.*\"goal_reached\": true,\n  \"goal\": {\"step\": 277, \"time\": 2.77, \"frame\": \"frame_00070.png\", \"position\": \\[4\\.[0-9]+, 0\\.[0-9]+\\], \"by\": \"gun\"},.*\"kind\": \"hit\", \"step\": 95, [^\n]*\"item\": \"button\", \"position\": \\[-4, 6.25\\], \"by\": \"\".*\"kind\": \"shot\", \"step\": 95, [^\n]*\"item\": \"gun\".*\"kind\": \"hit\", \"step\": 277, [^\n]*\"item\": \"bullseye\", \"position\": \\[4\\.[0-9]+, 0\\.[0-9]+\\], \"by\": \"gun\".*\"kind\": \"goal\", \"step\": 277, [^\n]*\"position\": \\[4\\.[0-9]+, 0\\.[0-9]+\\], \"by\": \"gun\".*\"expect\": \"'bullseye' hit before step 400\", \"met\": true, \"result\": \"met\"")
 
 # `rube play` (issue 7). Without a display it says so in one line and names the ways on (exit 1);
 # bad input is found before any window is asked for (exit 2). DISPLAY is unset for all of them.
@@ -268,12 +282,16 @@ rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
 # solution), and the script reads against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
 list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the list of levels, not a level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)
   set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)
   rube_cli_test("check --strict level ${stem}" "check|--strict|${level}|${solution}" 0 -DSTDERR_EMPTY=ON
                 "-DSTDOUT_MATCH=^[^\n]*${stem}.toml: ok\n[^\n]*${stem}.solution.toml: ok \\(a script for [^\n]*${stem}.toml\\)\n$")
 endforeach()
+# The level index is recognised and checked as one (every file it lists exists, no level twice).
+rube_cli_test("check the level index" "check|${PROJECT_SOURCE_DIR}/levels/index.toml" 0 -DSTDERR_EMPTY=ON
+              "-DSTDOUT_MATCH=index.toml: ok \\(a level index of [0-9]+ levels\\)\n$")
 set(lint ${RUBE_CLI_DIR}/lint)
 # Each lint fixture lists its warnings in '# expect:' lines; warnings leave the status 0, --strict makes it 2.
 foreach(stem warnings self-solving missed)
@@ -286,8 +304,9 @@ foreach(script script-errors.toml placements.solution.toml no-heavy.toml)
   rube_cli_test("check script ${script}" "check|--level|${PROJECT_SOURCE_DIR}/levels/ramp.toml|${lint}/${script}" 2
                 -DSTDERR_FIXTURE_ALL=${lint}/${script})
 endforeach()
-# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch.
-foreach(stem zones-typo switch-empty)
+# Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch,
+# and one aimed at nothing it can switch (an empty name, a target) is refused: an error, not only a lint warning.
+foreach(stem zones-typo switch-empty switch-target)
   rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
@@ -296,3 +315,46 @@ rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT
 # A level without a [goal] has nothing to miss: `rube run` says so and exits 0.
 rube_cli_test("run a level without a goal" "run|${lint}/warnings.toml|--no-render|--steps|20" 0
               "-DSTDOUT_MATCH=goal: +none \\(the level has no \\[goal\\]\\)\n" -DSTDERR_EMPTY=ON)
+
+# One vocabulary (issue 23): a step is a simulation step, a frame a written picture. Scripts say
+# `step` and `before_step`; the old keys are refused with the new name, each one listed.
+set(cli_levels ${RUBE_CLI_DIR}/levels)
+rube_cli_test("check a script in the old words names the new keys" "check|--level|${RUBE_GAME_LEVELS}/ramp.toml|${cli_levels}/old-keys.toml" 2
+              -DSTDERR_FIXTURE_ALL=${cli_levels}/old-keys.toml)
+rube_cli_test("run a script in the old words names the new key" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${cli_levels}/old-keys.toml|--no-render" 2
+              "-DSTDERR_LINE=${cli_levels}/old-keys.toml:5:1: 'frame' is now 'step' in [[action]]")
+# No option silently ignored: --frames N on a level runs (N - 1) x K steps, as on a scene, and writes N
+# frames; the run stopped before the goal is reported as not reached in time (the level runs 800).
+rube_cli_test("level --frames runs (N - 1) x K steps" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--out|${frames}/level-frames|--size|32x18|--frames|10|--every|3" 1
+              -DFRAMES_DIR=${frames}/level-frames "-DSUMMARY_MATCH=\"steps\": 27,.*\"every\": 3,\n  \"frame_size\": \\[32, 18\\],\n  \"frames_written\": 10,.*\"goal\": null,.*\"result\": \"not reached in time\""
+              "-DSTDOUT_MATCH=steps: +27\n.*goal: +not reached in time: the run stopped at step 27 \\(--frames\\), the level runs 800\n")
+# --steps that stops the run before an expectation's step: not reached in time, each expectation named
+# (the ramp's solution expects the flag hit before step 600 and the goal before 800; it is at 266).
+rube_cli_test("level --steps cutting a run short: expectations not reached in time" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--no-render|--steps|100" 1
+              "-DSTDOUT_MATCH=steps: +100\n.*goal: +not reached in time: the run stopped at step 100 \\(--steps\\), the level runs 800\n"
+              "-DSTDERR_MATCH=^${RUBE_GAME_LEVELS}/ramp.solution.toml:13:1: expectation not reached in time: 'flag' hit before step 600 \\(the run stopped at step 100, cut short by --steps\\)\n${RUBE_GAME_LEVELS}/ramp.solution.toml:17:1: expectation not reached in time: goal reached before step 800 \\(the run stopped at step 100, cut short by --steps\\)\nrube run: goal not reached in time: hit the flag with the ball\n$")
+# A run as long as the level, or one that passed an expectation's step, fails it: not "in time".
+rube_cli_test("level --steps past an expectation's step fails it" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${early}|--no-render|--steps|700" 1
+              "-DSTDERR_LINE=${early}:${early_line}:1: expectation failed: goal reached before step 100")
+
+# Expectations name who (issue 23): the red ball hits the flag, so a script expecting red passes and
+# one expecting blue fails, naming both expectations; a `by` naming nothing is an error at its place.
+rube_cli_test("level expectations by the right ball are met" "run|${cli_levels}/two-balls.toml|--script|${cli_levels}/two-balls-red.toml|--no-render" 0
+              "-DSTDOUT_MATCH=event: +step [0-9]+ hit flag by red\n(.*\n)?event: +step [0-9]+ goal flag by red\n" -DSTDERR_EMPTY=ON)
+rube_cli_test("level expectations by the wrong ball fail" "run|${cli_levels}/two-balls.toml|--script|${cli_levels}/two-balls-blue.toml|--no-render" 1
+              "-DSTDOUT_MATCH=goal: +reached at step [0-9]+\n"
+              "-DSTDERR_MATCH=^${cli_levels}/two-balls-blue.toml:4:1: expectation failed: 'flag' hit by 'blue' before step 300\n${cli_levels}/two-balls-blue.toml:9:1: expectation failed: goal reached by 'blue' before step 300\n$")
+rube_cli_test("check a by that names nothing" "check|--level|${cli_levels}/two-balls.toml|${cli_levels}/two-balls-bad-by.toml" 2
+              -DSTDERR_FIXTURE_ALL=${cli_levels}/two-balls-bad-by.toml)
+
+# Frames that explain themselves (issue 23): --labels and --zones draw on a level's frames, and are
+# refused on a physics scene, which has neither items nor zones; like --trails they need frames.
+rube_cli_test("level --labels --zones write frames" "run|${RUBE_GAME_LEVELS}/ramp.toml|--script|${RUBE_GAME_LEVELS}/ramp.solution.toml|--out|${frames}/labels|--size|64x36|--frames|2|--labels|--zones" 1
+              -DFRAMES_DIR=${frames}/labels "-DSUMMARY_MATCH=\"frames_written\": 2,")
+rube_cli_test("scene --labels is refused" "run|${RUBE_LEVELS}/bounce.toml|--out|${frames}/scene-labels|--labels" 2
+              -DFRAMES_DIR=${frames}/scene-labels -DNO_FRAMES_DIR=ON
+              "-DSTDERR_LINE=rube run: --labels is for levels, and ${RUBE_LEVELS}/bounce.toml is a physics scene: it has no items or placement zones")
+rube_cli_test("usage --zones without --out" "run|${RUBE_GAME_LEVELS}/ramp.toml|--zones" 2
+              "-DSTDERR_LINE=rube: --zones requires --out or --video (see 'rube run --help')")
+rube_cli_test("help run explains steps, frames and the level options" "run|--help" 0
+              "-DSTDOUT_MATCH=--labels .*--zones .*A step is one step of the simulation, a frame one picture.*step,time,body,item,x,y,vx,vy,angle,omega,radius.*'not reached in\n  time'")

@@ -97,17 +97,17 @@ TEST_CASE("a placed bomb named by the script is detonated by name, at the action
         CAPTURE(frame);
         const ScriptLoad load = script(
             "[[place]]\nkind = \"bomb\"\nposition = [0, 1]\nname = \"mine\"\ntrigger = \"switch\"\n"
-            "[[action]]\nframe = " +
+            "[[action]]\nstep = " +
             std::to_string(frame) +
             "\ndo = \"detonate\"\nitem = \"mine\"\n"
-            "[[expect]]\nexplosion = \"mine\"\nbefore_frame = 100\n");
+            "[[expect]]\nexplosion = \"mine\"\nbefore_step = 100\n");
         INFO(firstError(load));
         REQUIRE(load.script);
         const ScriptDesc& s = *load.script;
         LevelRun run(level(), s.placements);
         std::size_t next = 0;
         for (int step = 0; step < 60; ++step) {
-            for (; next < s.actions.size() && s.actions[next].frame == step; ++next)
+            for (; next < s.actions.size() && s.actions[next].step == step; ++next)
                 CHECK(takeAction(s.actions[next], run).empty());
             run.step();
         }
@@ -116,13 +116,13 @@ TEST_CASE("a placed bomb named by the script is detonated by name, at the action
             if (e.kind == EventKind::explosion) {
                 ++explosions;
                 CHECK(e.item == "mine");
-                CHECK(e.frame == frame); // steps taken when it went off: set off before step `frame`
+                CHECK(e.step == frame); // steps taken when it went off: set off before step `frame`
             }
         CHECK(explosions == 1);
     }
     // Without the name the action names nothing the level or the script has.
     CHECK(firstError(script("[[place]]\nkind = \"bomb\"\nposition = [0, 1]\ntrigger = \"switch\"\n"
-                            "[[action]]\nframe = 1\ndo = \"detonate\"\nitem = \"mine\"\n"))
+                            "[[action]]\nstep = 1\ndo = \"detonate\"\nitem = \"mine\"\n"))
               .find("unknown bomb 'mine'") != std::string::npos);
 }
 

@@ -31,8 +31,8 @@ constexpr double kPivotDampingRatio = 2.0;
 constexpr std::int64_t kPairBase = std::int64_t{1} << 32;
 constexpr std::int64_t kNoBody = std::numeric_limits<std::int64_t>::min();
 
-RigidStage::Box boundsOf(const RoundedPolygon& p, double extra) {
-    RigidStage::Box b{p.vertices[0], p.vertices[0]};
+BoundingBox boundsOf(const RoundedPolygon& p, double extra) {
+    BoundingBox b{p.vertices[0], p.vertices[0]};
     for (int i = 1; i < p.count; ++i) {
         b.min = {std::min(b.min.x, p.vertices[i].x), std::min(b.min.y, p.vertices[i].y)};
         b.max = {std::max(b.max.x, p.vertices[i].x), std::max(b.max.y, p.vertices[i].y)};
@@ -136,25 +136,38 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                              ma.bounciness * mb.bounciness));
     };
+    // Circles by the box they may reach this step; the broadphase lists the pairs whose boxes overlap in
+    // the order the double loop over bodies, then circles, visited them, so contacts keep their order.
+    circleBoxes_.resize(ctx.circles.size());
+    circleReach_.resize(ctx.circles.size());
+    for (std::size_t c = 0; c < ctx.circles.size(); ++c) {
+        const Circle& circle = ctx.circles[c];
+        const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0;
+        const Vec2 v = circle.motion == Motion::fixed ? Vec2{} : circle.velocity;
+        circleReach_[c] = kSpeculativeDistance + v.length() * dt + (circleDynamic ? gravityTravel : 0.0);
+        const Vec2 grow{circle.radius + circleReach_[c], circle.radius + circleReach_[c]};
+        circleBoxes_[c] = {circle.position - grow, circle.position + grow};
+    }
+    pairFinder_.find(boxes, circleBoxes_, pairs_);
+    std::size_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& bi = bodies[i];
         const BodySide side{static_cast<int>(i), true};
-        for (std::size_t j = i + 1; j < n; ++j) {
-            if (!isDynamic(i) && !isDynamic(j)) continue;
-            if (!boxes[i].overlaps(boxes[j])) continue;
-            add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j],
-                reach_[i] + reach_[j], bi.material, bodies[j].material);
-        }
-        for (std::size_t c = 0; c < ctx.circles.size(); ++c) {
+        for (; next < pairs_.size() && pairs_[next].body == static_cast<int>(i); ++next) {
+            const auto other = static_cast<std::size_t>(pairs_[next].other);
+            if (other < n) {
+                const std::size_t j = other;
+                if (!isDynamic(i) && !isDynamic(j)) continue;
+                add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j],
+                    reach_[i] + reach_[j], bi.material, bodies[j].material);
+                continue;
+            }
+            const std::size_t c = other - n;
             const Circle& circle = ctx.circles[c];
             const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0;
             if (!isDynamic(i) && !circleDynamic) continue;
-            const Vec2 v = circle.motion == Motion::fixed ? Vec2{} : circle.velocity;
-            const double reach = kSpeculativeDistance + v.length() * dt + (circleDynamic ? gravityTravel : 0.0);
-            const Vec2 grow{circle.radius + reach, circle.radius + reach};
-            if (!boxes[i].overlaps({circle.position - grow, circle.position + grow})) continue;
             add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i],
-                makeRoundedPolygon(circle), reach_[i] + reach, bi.material, circle.material);
+                makeRoundedPolygon(circle), reach_[i] + circleReach_[c], bi.material, circle.material);
         }
         if (!isDynamic(i)) continue;
         for (std::size_t s = 0; s < ctx.segments.size(); ++s) {

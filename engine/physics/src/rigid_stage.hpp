@@ -7,6 +7,7 @@
 
 #include "joint_stage.hpp"
 #include "pivot_joint.hpp"
+#include "rigid_pairs.hpp"
 #include "rigid_contacts.hpp"
 #include "rigid_warm_start.hpp"
 #include "step_method.hpp"
@@ -55,12 +56,7 @@ public:
     int sweep(StepContext& ctx, double dt);
 
     /// An axis-aligned bounding box, for the pair test.
-    struct Box {
-        Vec2 min, max;
-        bool overlaps(const Box& o) const {
-            return min.x <= o.max.x && o.min.x <= max.x && min.y <= o.max.y && o.min.y <= max.y;
-        }
-    };
+    using Box = BoundingBox;
 
 private:
     void findContacts(const StepContext& ctx, double dt);
@@ -94,6 +90,10 @@ private:
     std::vector<double> reach_; // per rigid body: speculative margin for the step
     std::vector<RoundedPolygon> shapes_;
     std::vector<Box> boxes_;
+    std::vector<Box> circleBoxes_;    // per circle: the box it may reach this step
+    std::vector<double> circleReach_; // per circle: its speculative margin for the step
+    RigidPairFinder pairFinder_;
+    std::vector<RigidPair> pairs_;
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_;

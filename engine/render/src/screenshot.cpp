@@ -17,9 +17,9 @@ std::string percent(double share) {
 
 } // namespace
 
-std::string goldenFileName(std::string_view scene, int frame) {
+std::string goldenFileName(std::string_view scene, int step) {
     char number[16];
-    std::snprintf(number, sizeof number, "_%04d.png", frame);
+    std::snprintf(number, sizeof number, "_%04d.png", step);
     return std::string(scene) + number;
 }
 

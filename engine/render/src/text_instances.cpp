@@ -3,6 +3,8 @@
 // At an integer scale and position the rectangles sit on pixel boundaries, so text is crisp.
 #include "shape_instance.hpp"
 
+#include "rube/render/draw_list.hpp"
+
 #include <stb_easy_font.h>
 
 #include <string>
@@ -43,6 +45,14 @@ void appendTextInstances(std::string_view text, int x, int y, int scale, Color c
         box.outline = color;
         out.push_back(box);
     }
+}
+
+int textWidth(std::string_view text, int scale) {
+    if (text.empty()) return 0;
+    thread_local std::string buffer;
+    buffer.assign(text);
+    // stb_easy_font_width measures in font units; the printer draws each unit `scale` pixels wide.
+    return stb_easy_font_width(buffer.data()) * (scale < 1 ? 1 : scale);
 }
 
 } // namespace rube::render

@@ -12,6 +12,7 @@ namespace rube::game::parts {
 namespace {
 
 constexpr double kRingSeconds = 0.5; // an explosion's ring grows to the blast radius in this time
+constexpr double kRingStart = 0.3;   // ... from this share of it, so the first frame shows a ring, not a dot
 
 // How a bomb goes off.
 enum class Trigger : std::uint8_t { timer, impact, switchHit };
@@ -75,8 +76,8 @@ public:
         const BombParams& p = run.items()[static_cast<std::size_t>(item)].params.as<BombParams>();
         if (p.trigger == Trigger::timer && run.world().time() >= p.fuse - 1e-9) trigger(run, item);
     }
-    void hit(LevelRun& run, int item, Vec2 point) const override {
-        (void)point;
+    void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
+        (void)point, (void)by;
         if (run.items()[static_cast<std::size_t>(item)].params.as<BombParams>().trigger == Trigger::impact)
             trigger(run, item);
     }
@@ -96,8 +97,8 @@ public:
         // The casing is gone with the blast.
         world.remove(state.circle);
         state.circle = {};
-        run.report({EventKind::explosion, run.frame(), world.time(), desc.name, desc.position,
-                    static_cast<int>(pushed.size())});
+        run.report({EventKind::explosion, run.steps(), world.time(), desc.name, desc.position,
+                    static_cast<int>(pushed.size()), ""});
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::detonate; }
     std::string spent(const ItemDesc& item, const ItemState& state) const override {
@@ -111,9 +112,18 @@ public:
         const Vec2 at = d.run.itemPosition(d.item);
         if (state.detonatedAt) {
             const double age = d.run.world().time() - *state.detonatedAt;
-            if (age < kRingSeconds)
-                d.list.ring(pt(item.position), static_cast<float>(p.blastRadius * std::max(0.05, age / kRingSeconds)),
-                            4.0f, palette["explosion"]);
+            if (age < kRingSeconds) {
+                // The blast's whole reach from the step it goes off (every body inside was pushed on
+                // that step), fading as a ring runs out to its edge: seen at once, not a dot.
+                const double fade = 1.0 - age / kRingSeconds;
+                const render::Color colour = palette["explosion"];
+                const auto alpha = [&](double a) { return static_cast<std::uint8_t>(std::lround(a * fade)); };
+                d.list.circle(pt(item.position), static_cast<float>(p.blastRadius),
+                              {colour.withAlpha(alpha(0x70)), colour.withAlpha(alpha(0xff)), 2.0f});
+                d.list.ring(pt(item.position),
+                            static_cast<float>(p.blastRadius * (kRingStart + (1.0 - kRingStart) * age / kRingSeconds)),
+                            4.0f, colour);
+            }
         } else {
             d.list.circle(pt(at), static_cast<float>(p.radius), style("ground_outline", "ball_outline"));
             d.list.line(pt(at + Vec2{0.0, p.radius}), pt(at + Vec2{0.4 * p.radius, 1.5 * p.radius}), 3.0f,

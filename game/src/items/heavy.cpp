@@ -17,7 +17,7 @@ protected:
     double radius() const override { return 0.3; }
     double mass() const override { return 8.0; }
     double bounciness() const override { return 0.2; }
-    render::Style look() const override { return style("ground", "ball_outline"); }
+    render::Style look() const override { return style("heavy_ball", "ball_outline"); }
 
 private:
     static constexpr auto kKeys = ballKeys("0.3");

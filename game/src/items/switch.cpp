@@ -57,13 +57,13 @@ public:
         bodies.circles.push_back(roundPart(item, item.params.as<SwitchParams>().radius, 0.5));
         return bodies;
     }
-    void hit(LevelRun& run, int item, Vec2 point) const override {
+    void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
         // Only the first touch is news, and only it flips what the switch names.
         ItemState& state = run.partState(item);
         if (state.hit) return;
         state.hit = true;
-        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
-                    point, 0});
+        run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                    point, 0, by});
         trigger(run, item);
     }
     void trigger(LevelRun& run, int item) const override {

@@ -39,13 +39,13 @@ public:
         return bodies;
     }
     int path(const ItemDesc& item) const override { return item.params.as<TargetParams>().path; }
-    void hit(LevelRun& run, int item, Vec2 point) const override {
+    void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
         // Only the first touch is news: a ball resting on a target would report it every step.
         ItemState& state = run.partState(item);
         if (state.hit) return;
         state.hit = true;
-        run.report({EventKind::hit, run.frame(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
-                    point, 0});
+        run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                    point, 0, by});
     }
     void draw(const PartDrawing& d) const override {
         const Vec2 at = d.run.itemPosition(d.item);

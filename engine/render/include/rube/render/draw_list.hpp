@@ -157,4 +157,8 @@ private:
     std::string characters_;
 };
 
+/// How wide `text` is drawn at `scale`, in pixels: for laying out HUD lines within a frame (the
+/// font is proportional; a newline starts a new line, and the widest line counts).
+int textWidth(std::string_view text, int scale = 2);
+
 } // namespace rube::render

@@ -20,9 +20,10 @@ struct ScreenshotCheck {
     std::filesystem::path diffPath;     ///< written on failure when the sizes agree: see diffImage
 };
 
-/// The golden file name of frame `frame` of `scene`, e.g. "render-basics_0000.png", so a
-/// scene and its frames are found by the same name.
-std::string goldenFileName(std::string_view scene, int frame);
+/// The golden file name of `scene` after `step` steps, e.g. "ramp_0266.png": goldens are named by
+/// the simulation step they show (issue 23: a step is a step, a frame a written picture), so a
+/// scene and its goldens are found by the same name.
+std::string goldenFileName(std::string_view scene, int step);
 
 /// Whether the environment asks for goldens to be regenerated (UPDATE_SCREENSHOTS=1).
 bool updatingScreenshots();

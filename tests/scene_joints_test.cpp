@@ -1,6 +1,7 @@
 // Scene files: [[joint]] tables read into joints the World builds (each kind, its defaults), and
 // every mistake reported at file:line:col with the kind's own keys suggested.
 #include "scene_file.hpp"
+#include "scene_text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -9,28 +10,10 @@
 
 using namespace rube;
 using namespace rube::game;
+using test::errorOf;
+using test::sceneOf;
 
 namespace {
-
-std::vector<std::string> errorsOf(std::string_view text) {
-    std::vector<std::string> lines;
-    for (const SceneError& e : parseScene(text, "s.toml").errors) lines.push_back(e.format());
-    return lines;
-}
-
-std::string errorOf(std::string_view text) {
-    const auto errors = errorsOf(text);
-    INFO("errors: " << errors.size() << (errors.empty() ? "" : ", first: " + errors.front()));
-    REQUIRE(errors.size() == 1);
-    return errors.front();
-}
-
-SceneDesc sceneOf(std::string_view text) {
-    SceneLoad load = parseScene(text, "s.toml");
-    INFO((load.errors.empty() ? std::string("no errors") : load.errors.front().format()));
-    REQUIRE(load.ok());
-    return std::move(*load.scene);
-}
 
 // Two wheels and a box (lines 1 to 16), to join: line 17 is the first of what a case adds.
 constexpr const char* kParts = "name = \"machine\"\n"

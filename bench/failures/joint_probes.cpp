@@ -59,6 +59,13 @@ bool finiteState(const World& world) {
     return true;
 }
 
+// One step; false (and the outcome marked) when a body's state went non-finite.
+bool stepFinite(World& world, Outcome& out) {
+    world.step();
+    out.nonFinite = !finiteState(world);
+    return !out.nonFinite;
+}
+
 } // namespace
 
 Outcome chainProbe(Method method, double ratio) {
@@ -78,11 +85,7 @@ Outcome chainProbe(Method method, double ratio) {
     hinge(world, previous, box(world, {kLinks * kLink + 0.2, 0.0}, {0.2, 0.2}, ratio), {kLinks * kLink, 0.0});
     out.jointError = 0.0;
     for (int step = 0; step < 180 && !out.failed(); ++step) {
-        world.step();
-        if (!finiteState(world)) {
-            out.nonFinite = true;
-            break;
-        }
+        if (!stepFinite(world, out)) break;
         double open = 0.0;
         Vec2 end{};
         for (const JointEnd& link : links) {
@@ -128,11 +131,7 @@ Outcome motorProbe(Method method, double torqueOverLoad) {
     const double alpha = (tau - load * g * r) / inertia;
     out.jointError = 0.0;
     for (int step = 1; step <= 30 && !out.failed(); ++step) {
-        world.step();
-        if (!finiteState(world)) {
-            out.nonFinite = true;
-            break;
-        }
+        if (!stepFinite(world, out)) break;
         if (step % 15 != 0) continue;
         const double t = step * kTimeStep;
         const double expected = std::min(alpha * t, target);
@@ -161,11 +160,7 @@ Outcome springProbe(Method method, double stiffness) {
     const double e0 = 0.5 * stiffness * 0.01;
     out.jointError = 0.0;
     for (int step = 0; step < 300 && !out.failed(); ++step) {
-        world.step();
-        if (!finiteState(world)) {
-            out.nonFinite = true;
-            break;
-        }
+        if (!stepFinite(world, out)) break;
         const rube::Circle& c = world.circle(id);
         const double stretch = c.position.length() - 1.0;
         const double e = 0.5 * stiffness * stretch * stretch + 0.5 * c.velocity.lengthSquared();

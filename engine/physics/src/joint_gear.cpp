@@ -45,8 +45,6 @@ Coupling couplingOf(const JointConstraint& c, const JointView& view, const Joint
     return k;
 }
 
-void prepare(JointConstraint&, const JointView&, const JointStep&) {}
-
 void warmStart(JointConstraint& c, const JointView& view, const JointStep& step) {
     couplingOf(c, view, step).row.apply(view, c.angularImpulse);
 }
@@ -56,13 +54,10 @@ void solve(JointConstraint& c, const JointView& view, const JointStep& step, boo
     solveEquality(k.row, view, k.error, c.angularImpulse, step.rigid, useBias);
 }
 
-void solvePosition(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, true); }
-void solveVelocity(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, false); }
-
 } // namespace
 
 const JointBehaviour& gearBehaviour() {
-    static const JointBehaviour behaviour{prepare, warmStart, solvePosition, solveVelocity};
+    static const JointBehaviour behaviour = constraintBehaviour<solve>(warmStart);
     return behaviour;
 }
 

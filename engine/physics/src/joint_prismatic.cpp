@@ -37,8 +37,6 @@ Row slideRow(const JointConstraint& c, const Frame& f, Vec2 direction) {
     return row;
 }
 
-void prepare(JointConstraint&, const JointView&, const JointStep&) {}
-
 void warmStart(JointConstraint& c, const JointView& view, const JointStep&) {
     const Frame f = frameOf(c, view);
     const double axial = c.motorImpulse + c.lowerImpulse - c.upperImpulse;
@@ -56,8 +54,6 @@ void solveBlock(JointConstraint& c, const JointView& view, const JointStep& step
     const double k12 = iA * sA + iB * sB;
     double k22 = iA + iB;
     if (k22 == 0.0) k22 = 1.0; // neither turns: the angle row is idle
-    const double det = k11 * k22 - k12 * k12;
-    if (det == 0.0) return;
     const Vec2 cdot{f.perp.dot(f.b.velocity - f.a.velocity) + sB * f.b.omega - sA * f.a.omega, f.b.omega - f.a.omega};
     Vec2 bias;
     double massScale = 1.0, impulseScale = 0.0;
@@ -67,8 +63,8 @@ void solveBlock(JointConstraint& c, const JointView& view, const JointStep& step
         massScale = step.rigid.massScale;
         impulseScale = step.rigid.impulseScale;
     }
-    const Vec2 rhs = cdot + bias;
-    const Vec2 solved{(k22 * rhs.x - k12 * rhs.y) / det, (k11 * rhs.y - k12 * rhs.x) / det};
+    Vec2 solved;
+    if (!solveSymmetric2x2(k11, k12, k22, cdot + bias, solved)) return;
     const Vec2 impulse = solved * -massScale - c.linearImpulse * impulseScale;
     c.linearImpulse += impulse;
     JointBody a = f.a, b = f.b;
@@ -98,13 +94,10 @@ void solve(JointConstraint& c, const JointView& view, const JointStep& step, boo
     solveBlock(c, view, step, useBias);
 }
 
-void solvePosition(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, true); }
-void solveVelocity(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, false); }
-
 } // namespace
 
 const JointBehaviour& prismaticBehaviour() {
-    static const JointBehaviour behaviour{prepare, warmStart, solvePosition, solveVelocity};
+    static const JointBehaviour behaviour = constraintBehaviour<solve>(warmStart);
     return behaviour;
 }
 

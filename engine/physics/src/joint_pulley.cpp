@@ -30,8 +30,6 @@ Rope ropeOf(const JointConstraint& c, const JointView& view) {
     return rope;
 }
 
-void prepare(JointConstraint&, const JointView&, const JointStep&) {}
-
 void warmStart(JointConstraint& c, const JointView& view, const JointStep&) {
     ropeOf(c, view).slackRow.apply(view, c.angularImpulse);
 }
@@ -41,13 +39,10 @@ void solve(JointConstraint& c, const JointView& view, const JointStep& step, boo
     solveInequality(rope.slackRow, view, rope.slack, c.angularImpulse, step.rigid, step.h, useBias);
 }
 
-void solvePosition(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, true); }
-void solveVelocity(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, false); }
-
 } // namespace
 
 const JointBehaviour& pulleyBehaviour() {
-    static const JointBehaviour behaviour{prepare, warmStart, solvePosition, solveVelocity};
+    static const JointBehaviour behaviour = constraintBehaviour<solve>(warmStart);
     return behaviour;
 }
 

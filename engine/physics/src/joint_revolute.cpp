@@ -24,8 +24,6 @@ Ends endsOf(const JointConstraint& c, const JointView& view) {
     return e;
 }
 
-void prepare(JointConstraint&, const JointView&, const JointStep&) {}
-
 void warmStart(JointConstraint& c, const JointView& view, const JointStep&) {
     const Ends e = endsOf(c, view);
     JointBody a = e.a, b = e.b;
@@ -54,13 +52,10 @@ void solve(JointConstraint& c, const JointView& view, const JointStep& step, boo
     solvePoint(c, view, e.rA, e.rB, error, step.rigid, useBias);
 }
 
-void solvePosition(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, true); }
-void solveVelocity(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, false); }
-
 } // namespace
 
 const JointBehaviour& revoluteBehaviour() {
-    static const JointBehaviour behaviour{prepare, warmStart, solvePosition, solveVelocity};
+    static const JointBehaviour behaviour = constraintBehaviour<solve>(warmStart);
     return behaviour;
 }
 

@@ -147,11 +147,8 @@ void solvePoint(JointConstraint& c, const JointView& view, Vec2 rA, Vec2 rB, Vec
     const double k11 = mA + mB + rA.y * rA.y * iA + rB.y * rB.y * iB;
     const double k12 = -rA.y * rA.x * iA - rB.y * rB.x * iB;
     const double k22 = mA + mB + rA.x * rA.x * iA + rB.x * rB.x * iB;
-    const double det = k11 * k22 - k12 * k12;
-    if (det == 0.0) return;
-    const Vec2 rhs = cdot + bias;
-    // K^-1 rhs for the symmetric 2 x 2 K.
-    const Vec2 solved{(k22 * rhs.x - k12 * rhs.y) / det, (k11 * rhs.y - k12 * rhs.x) / det};
+    Vec2 solved;
+    if (!solveSymmetric2x2(k11, k12, k22, cdot + bias, solved)) return;
     const Vec2 impulse = solved * -massScale - c.linearImpulse * impulseScale;
     c.linearImpulse += impulse;
     a.velocity -= impulse * mA;

@@ -91,6 +91,15 @@ struct JointBehaviour {
     bool isForce = false;
 };
 
+/// The behaviour of a constraint kind (not a force) whose soft and relax passes are one
+/// Solve(c, view, step, useBias), and which keeps nothing of its own at the step's start.
+template <void (*Solve)(JointConstraint&, const JointView&, const JointStep&, bool)>
+JointBehaviour constraintBehaviour(void (*warmStart)(JointConstraint&, const JointView&, const JointStep&)) {
+    return {[](JointConstraint&, const JointView&, const JointStep&) {}, warmStart,
+            [](JointConstraint& c, const JointView& view, const JointStep& step) { Solve(c, view, step, true); },
+            [](JointConstraint& c, const JointView& view, const JointStep& step) { Solve(c, view, step, false); }};
+}
+
 const JointBehaviour& revoluteBehaviour();
 const JointBehaviour& prismaticBehaviour();
 const JointBehaviour& weldBehaviour();

@@ -13,8 +13,6 @@ Softness softnessOf(const JointConstraint& c, const JointStep& step) {
     return d.hertz > 0.0 ? makeSoftness(d.hertz, d.dampingRatio, step.h) : step.softness;
 }
 
-void prepare(JointConstraint&, const JointView&, const JointStep&) {}
-
 void warmStart(JointConstraint& c, const JointView& view, const JointStep&) {
     const JointDef& d = c.joint->def;
     JointBody a = loadSide(view, c.a), b = loadSide(view, c.b);
@@ -41,13 +39,10 @@ void solve(JointConstraint& c, const JointView& view, const JointStep& step, boo
     solvePoint(c, view, rA, rB, error, soft, useBias);
 }
 
-void solvePosition(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, true); }
-void solveVelocity(JointConstraint& c, const JointView& view, const JointStep& step) { solve(c, view, step, false); }
-
 } // namespace
 
 const JointBehaviour& weldBehaviour() {
-    static const JointBehaviour behaviour{prepare, warmStart, solvePosition, solveVelocity};
+    static const JointBehaviour behaviour = constraintBehaviour<solve>(warmStart);
     return behaviour;
 }
 

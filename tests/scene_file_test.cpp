@@ -1,6 +1,7 @@
 // Scene files: every physics scene loads, and every kind of mistake is reported as
 // file:line:col: message at the place it was written.
 #include "scene_file.hpp"
+#include "scene_text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -12,30 +13,11 @@
 
 using namespace rube;
 using namespace rube::game;
+using test::errorOf;
+using test::errorsOf;
+using test::sceneOf;
 
 namespace {
-
-// The errors of `text`, each as file:line:col: message, under the file name "s.toml".
-std::vector<std::string> errorsOf(std::string_view text) {
-    std::vector<std::string> lines;
-    for (const SceneError& e : parseScene(text, "s.toml").errors) lines.push_back(e.format());
-    return lines;
-}
-
-// The one error of `text`; fails when there are none or several.
-std::string errorOf(std::string_view text) {
-    const auto errors = errorsOf(text);
-    INFO("errors: " << errors.size() << (errors.empty() ? "" : ", first: " + errors.front()));
-    REQUIRE(errors.size() == 1);
-    return errors.front();
-}
-
-SceneDesc sceneOf(std::string_view text) {
-    SceneLoad load = parseScene(text, "s.toml");
-    INFO((load.errors.empty() ? std::string("no errors") : load.errors.front().format()));
-    REQUIRE(load.ok());
-    return std::move(*load.scene);
-}
 
 // A valid scene to break one line at a time: line 1 name, line 3 [[circle]], line 4 position, line 5 radius.
 constexpr const char* kBall = "name = \"ball\"\n"
@@ -48,9 +30,10 @@ std::string ballWith(std::string_view line5) { return std::string(kBall) + std::
 } // namespace
 
 TEST_CASE("every physics scene loads, builds a world and steps", "[scene]") {
-    const std::set<std::string> expected = {"ball-stack", "blocks",         "bounce",        "bullet",    "float",
-                                            "islands",    "newtons-cradle", "pendulum",      "pile",      "pool-break",
-                                            "projectile", "rolling",        "seesaw-domino", "slope-rest"};
+    const std::set<std::string> expected = {
+        "ball-stack", "blocks", "bounce",     "bullet",     "float",   "islands",       "newtons-cradle",
+        "pendulum",   "pile",   "pool-break", "projectile", "rolling", "seesaw-domino", "slope-rest",
+        "gears",      "belt",   "pulley",     "springs",    "piston",  "weld",          "chain"};
     std::set<std::string> found;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_LEVELS_DIR)) {
         if (entry.path().extension() != ".toml") continue;

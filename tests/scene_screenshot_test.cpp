@@ -49,6 +49,13 @@ constexpr Golden kGoldens[] = {
     {"rolling", 90, true, false},        // t = 1.5 s: the slider ahead, the disc, the ring behind; spokes turned
     {"seesaw-domino", 90, false, false}, // t = 1.5 s: the seesaw down, the box in flight, the dominoes fallen
     {"slope-rest", 60, true, true},      // t = 1 s: sliding, pressed onto the slope
+    {"gears", 60, false, false},         // t = 1 s: teeth turned, the rack halfway to its limit
+    {"belt", 60, false, false},          // t = 1 s: three wheels turning one way, the rider on the rim
+    {"pulley", 45, false, false},        // t = 0.75 s: the heavy box falling, the light one rising
+    {"springs", 40, false, false},       // t = 0.67 s: coils stretched and squeezed, the pair in flight
+    {"piston", 90, false, false},        // t = 1.5 s: the ram out 1.5 m, balls leaving the ledge
+    {"weld", 36, false, false},          // t = 0.6 s: the hammer down at the ball, the flag swaying
+    {"chain", 60, false, false},         // t = 1 s: the chain falling in a curve, the weight below
 };
 
 // One context and renderer for the whole executable: making a GL context costs more than a test.
@@ -122,3 +129,10 @@ TEST_CASE("rolling matches its golden frames", "[screenshot][scene]") { checkGol
 TEST_CASE("seesaw-domino matches its golden frames", "[screenshot][scene]") { checkGoldens("seesaw-domino"); }
 TEST_CASE("islands matches its golden frames", "[screenshot][scene]") { checkGoldens("islands"); }
 TEST_CASE("slope-rest matches its golden frames", "[screenshot][scene]") { checkGoldens("slope-rest"); }
+TEST_CASE("gears matches its golden frames", "[screenshot][scene]") { checkGoldens("gears"); }
+TEST_CASE("belt matches its golden frames", "[screenshot][scene]") { checkGoldens("belt"); }
+TEST_CASE("pulley matches its golden frames", "[screenshot][scene]") { checkGoldens("pulley"); }
+TEST_CASE("springs matches its golden frames", "[screenshot][scene]") { checkGoldens("springs"); }
+TEST_CASE("piston matches its golden frames", "[screenshot][scene]") { checkGoldens("piston"); }
+TEST_CASE("weld matches its golden frames", "[screenshot][scene]") { checkGoldens("weld"); }
+TEST_CASE("chain matches its golden frames", "[screenshot][scene]") { checkGoldens("chain"); }

@@ -118,6 +118,10 @@ std::string Outcome::describe() const {
     add(overlaps, "overlap > 5 % r");
     add(gainsEnergy, "gains energy");
     add(misdirected, "bounce off > 0.5 deg");
+    add(refused, "refuses joints");
+    add(stretches, "stretches > 1 %");
+    add(missesFormula, "misses its formula > 1 %");
+    add(losesEnergy, "loses energy");
     return s;
 }
 

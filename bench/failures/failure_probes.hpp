@@ -21,9 +21,17 @@ struct Outcome {
     double energyGain = 0.0;      ///< the largest rise of the energy over its start, relative
     bool misdirected = false;     ///< a bounce left more than 0.5 degrees off the exact reflection
     double directionError = -1.0; ///< that bounce's direction error, degrees (capBounceProbe; -1: not measured)
+    bool refused = false;         ///< the method does not model the probe's joints (World::step refuses them)
+    bool stretches = false;       ///< a chain's hinges opened by more than 1 % of its length
+    bool missesFormula = false;   ///< a motor's speed left its formula by more than 1 %
+    bool losesEnergy = false;     ///< an undamped spring's energy fell by more than 1 %
+    double jointError = -1.0;     ///< the joint probe's own measure, relative (-1: not measured)
 
     /// True when anything above went wrong.
-    bool failed() const { return tunnels || sinks || overlaps || gainsEnergy || eventCap || nonFinite || misdirected; }
+    bool failed() const {
+        return tunnels || sinks || overlaps || gainsEnergy || eventCap || nonFinite || misdirected || refused ||
+               stretches || missesFormula || losesEnergy;
+    }
     /// The failures, worst first, joined by ", " ("" when none).
     std::string describe() const;
 };

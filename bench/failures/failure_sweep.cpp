@@ -3,6 +3,8 @@
 
 #include "failure_sweep.hpp"
 
+#include "joint_probes.hpp"
+
 #include <cstdio>
 #include <ostream>
 
@@ -22,6 +24,9 @@ Outcome incline(rube::Method m, double v, bool) { return inclineProbe(m, v); }
 Outcome vee(rube::Method m, double v, bool) { return vProbe(m, v); }
 Outcome impact(rube::Method m, double v, bool) { return capBounceProbe(m, v); }
 Outcome floorStack(rube::Method m, double v, bool) { return floorStackProbe(m, static_cast<int>(v)); }
+Outcome chain(rube::Method m, double v, bool) { return chainProbe(m, v); }
+Outcome motor(rube::Method m, double v, bool) { return motorProbe(m, v); }
+Outcome spring(rube::Method m, double v, bool) { return springProbe(m, v); }
 
 std::string number(double v) {
     char buffer[32];
@@ -84,6 +89,22 @@ std::vector<Axis> failureAxes() {
          "the floor counts",
          {1, 2, 4, 6, 8, 10, 12, 16, 24, 32},
          floorStack},
+        {"chain mass ratio",
+         "a chain of 10 capsule links of 1 kg (0.5 m) on hinges from a pin, laid level, a box of ratio x 1 kg "
+         "hinged to its end, 3 s: *stretches* when its hinges open by more than 1 % of its 5 m",
+         {1, 3, 10, 30, 100, 300, 1000, 1e4},
+         chain},
+        {"motor torque / load",
+         "a disc (r = 0.5 m, 1 kg) with a motor at 2 rad/s whose torque is this many times the load M g r of a "
+         "1 kg rack it lifts through a gear: omega(t) = (tau - M g r) t / (I + M r^2) up to 2 rad/s, within 1 % "
+         "at 0.25 and 0.5 s",
+         {0.25, 0.5, 0.9, 1.1, 2, 5, 20, 100, 1000},
+         motor},
+        {"spring k, N/m",
+         "a 1 kg ball on an undamped spring stretched 0.1 m, no gravity, 5 s at dt = 1/60 s (8 substeps of h = "
+         "1/480 s; omega h = sqrt(k) / 480): its energy within 1 %",
+         {10, 100, 1000, 3000, 1e4, 3e4, 1e5, 1e6, 1e7},
+         spring},
     };
 }
 
@@ -108,7 +129,9 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
         << "Each cell is the first value of the axis, tried from left to right in the order below, at which the\n"
         << "method fails, and how: it *tunnels* (ends past a line it came at), *sinks* (a resting ball passes\n"
         << "through the floor or the ball beneath it), overlaps by more than 5 % of a radius after a step, gains\n"
-        << "more than 1 % energy (C <= 1 may only lose it), or hits the event cap (4096 impacts in a step).\n"
+        << "more than 1 % energy (C <= 1 may only lose it), or hits the event cap (4096 impacts in a step); on\n"
+        << "the joints' axes it *refuses joints* (only the solver carries them), *stretches* (a chain's hinges\n"
+        << "open), *misses its formula* (a motor) or *loses energy* (an undamped spring).\n"
         << "Every method runs at dt = 1/60 s (but on the step-rate axis) with `WorldDef`'s defaults.\n\n";
     out << "| method |";
     for (const Axis& axis : sweep.axes) out << ' ' << axis.name << " |";
@@ -140,7 +163,9 @@ void writeMarkdown(std::ostream& out, const Sweep& sweep, const std::string& com
             out << "| " << rube::methodName(sweep.methods[m]) << " |";
             for (const auto& [value, outcome] : sweep.cells[m][a].tried) {
                 char detail[64];
-                if (outcome.directionError >= 0.0)
+                if (outcome.refused) detail[0] = '\0';
+                else if (outcome.jointError >= 0.0) std::snprintf(detail, sizeof detail, " (%.2g)", outcome.jointError);
+                else if (outcome.directionError >= 0.0)
                     std::snprintf(detail, sizeof detail, " (%.2g deg)", outcome.directionError);
                 else std::snprintf(detail, sizeof detail, " (%.2g, %.2g)", outcome.deepestOverlap, outcome.energyGain);
                 out << ' ' << (outcome.failed() ? outcome.describe() : "ok") << detail << " |";

@@ -5,6 +5,7 @@
 
 #include <box2d/box2d.h>
 
+#include <algorithm>
 #include <numbers>
 #include <vector>
 
@@ -93,7 +94,57 @@ public:
         const b2Body* b = balls_[static_cast<std::size_t>(i)];
         return {{b->GetPosition().x, b->GetPosition().y},
                 {b->GetLinearVelocity().x, b->GetLinearVelocity().y},
-                b->GetAngularVelocity()};
+                b->GetAngularVelocity(),
+                b->GetAngle()};
+    }
+
+    // Box2D 2.4.1's revolute (with its motor), gear, pulley and distance joint (a spring when given
+    // stiffness and damping), from its documented API.
+    bool addJoint(const JointSpec& s) override {
+        b2Body* a = balls_.at(static_cast<std::size_t>(s.a));
+        switch (s.kind) {
+        case JointSpec::Kind::pin: {
+            b2RevoluteJointDef d;
+            d.Initialize(ground(), a, a->GetPosition());
+            d.enableMotor = s.maxTorque > 0.0;
+            d.motorSpeed = static_cast<float>(s.motorSpeed);
+            d.maxMotorTorque = static_cast<float>(s.maxTorque);
+            pins_.resize(std::max(pins_.size(), static_cast<std::size_t>(s.a) + 1), nullptr);
+            pins_[static_cast<std::size_t>(s.a)] = world_.CreateJoint(&d);
+            return true;
+        }
+        case JointSpec::Kind::gear: {
+            // Box2D's gear: coordinateA + ratio coordinateB = constant, as rube's.
+            b2GearJointDef d;
+            d.joint1 = pins_.at(static_cast<std::size_t>(s.a));
+            d.joint2 = pins_.at(static_cast<std::size_t>(s.b));
+            d.bodyA = d.joint1->GetBodyB();
+            d.bodyB = d.joint2->GetBodyB();
+            d.ratio = static_cast<float>(s.ratio);
+            world_.CreateJoint(&d);
+            return true;
+        }
+        case JointSpec::Kind::pulley: {
+            b2Body* b = balls_.at(static_cast<std::size_t>(s.b));
+            b2PulleyJointDef d;
+            d.Initialize(a, b, toB2(s.groundA), toB2(s.groundB), a->GetPosition(), b->GetPosition(),
+                         static_cast<float>(s.ratio));
+            world_.CreateJoint(&d);
+            return true;
+        }
+        case JointSpec::Kind::spring: {
+            b2DistanceJointDef d;
+            d.Initialize(ground(), a, toB2(s.anchor), a->GetPosition());
+            d.length = static_cast<float>(s.restLength);
+            d.minLength = 0.0f;
+            d.maxLength = 1e6f;
+            d.stiffness = static_cast<float>(s.stiffness);
+            d.damping = static_cast<float>(s.damping);
+            world_.CreateJoint(&d);
+            return true;
+        }
+        }
+        return false;
     }
 
     int boxCount() const override { return static_cast<int>(boxes_.size()); }
@@ -106,10 +157,20 @@ public:
     }
 
 private:
+    b2Body* ground() {
+        if (!ground_) {
+            b2BodyDef d;
+            ground_ = world_.CreateBody(&d);
+        }
+        return ground_;
+    }
+
     ProductRestitution listener_;
     b2World world_;
     float timeStep_;
     std::vector<b2Body*> balls_;
+    b2Body* ground_ = nullptr;
+    std::vector<b2Joint*> pins_; // per ball: its revolute, for the gears
     std::vector<b2Body*> boxes_;
 };
 

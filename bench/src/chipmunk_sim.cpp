@@ -21,7 +21,11 @@ public:
         if (spec.chipmunkSleep) cpSpaceSetSleepTimeThreshold(space_, 0.5);
     }
     ~ChipmunkSim() override {
-        // cpSpaceFree frees neither bodies nor shapes: remove and free what this adapter made.
+        // cpSpaceFree frees neither bodies, shapes nor constraints: remove and free what this adapter made.
+        for (cpConstraint* constraint : constraints_) {
+            cpSpaceRemoveConstraint(space_, constraint);
+            cpConstraintFree(constraint);
+        }
         for (cpShape* shape : shapes_) {
             cpSpaceRemoveShape(space_, shape);
             cpShapeFree(shape);
@@ -82,7 +86,37 @@ public:
     BallState ball(int i) const override {
         const cpBody* b = balls_[static_cast<std::size_t>(i)];
         const cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
-        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b)};
+        return {{p.x, p.y}, {v.x, v.y}, cpBodyGetAngularVelocity(b), cpBodyGetAngle(b)};
+    }
+
+    // Chipmunk 7's pivot (a pin), simple motor, gear and damped spring, from its documented API; it
+    // has no pulley.
+    bool addJoint(const JointSpec& s) override {
+        cpBody* a = balls_.at(static_cast<std::size_t>(s.a));
+        cpBody* world = cpSpaceGetStaticBody(space_);
+        switch (s.kind) {
+        case JointSpec::Kind::pin:
+            add(cpPivotJointNew(world, a, cpBodyGetPosition(a)));
+            if (s.maxTorque > 0.0) {
+                // cpSimpleMotor drives wB - wA to -rate: with the ball as a, the ball turns at `rate`.
+                cpConstraint* motor = cpSimpleMotorNew(a, world, s.motorSpeed);
+                cpConstraintSetMaxForce(motor, s.maxTorque);
+                add(motor);
+            }
+            return true;
+        case JointSpec::Kind::gear: {
+            // cpGearJoint holds wA = ratio_cp wB; rube's angle_a + ratio angle_b = constant is ratio_cp = -ratio.
+            cpBody* b = balls_.at(static_cast<std::size_t>(s.b));
+            add(cpGearJointNew(a, b, 0.0, -s.ratio));
+            return true;
+        }
+        case JointSpec::Kind::spring:
+            add(cpDampedSpringNew(world, a, toCp(s.anchor), cpvzero, s.restLength, s.stiffness, s.damping));
+            return true;
+        case JointSpec::Kind::pulley: break;
+        }
+        lacksJoint_ = true;
+        return false;
     }
 
     int boxCount() const override { return static_cast<int>(boxes_.size()); }
@@ -95,6 +129,7 @@ public:
 private:
     void add(cpBody* body) { bodies_.push_back(cpSpaceAddBody(space_, body)); }
     void add(cpShape* shape) { shapes_.push_back(cpSpaceAddShape(space_, shape)); }
+    void add(cpConstraint* constraint) { constraints_.push_back(cpSpaceAddConstraint(space_, constraint)); }
 
     cpSpace* space_;
     double timeStep_;
@@ -102,6 +137,7 @@ private:
     std::vector<cpBody*> boxes_;
     std::vector<cpBody*> bodies_;
     std::vector<cpShape*> shapes_;
+    std::vector<cpConstraint*> constraints_;
 };
 
 [[maybe_unused]] const bool registered = registerEngine(

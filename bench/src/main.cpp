@@ -220,6 +220,11 @@ int main(int argc, char** argv) {
                     continue;
                 }
                 const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
+                if (row.lacksJoint) {
+                    std::fprintf(stderr, "%-18s %-16s does not have the scene's joint: not run\n", scene.name.c_str(),
+                                 engine.name.c_str());
+                    break;
+                }
                 if (row.timeout) timedOut = row;
                 std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
                              engine.name.c_str(), rate, row.msPerStep,

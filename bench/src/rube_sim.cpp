@@ -4,6 +4,7 @@
 
 #include "rube/physics/world.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,7 @@ public:
     int ballCount() const override { return static_cast<int>(world_.circles().size()); }
     BallState ball(int i) const override {
         const auto& c = world_.circles()[static_cast<std::size_t>(i)];
-        return {c.position, c.velocity, c.angularVelocity};
+        return {c.position, c.velocity, c.angularVelocity, c.angle};
     }
     int boxCount() const override { return static_cast<int>(boxes_.size()); }
     BoxState box(int i) const override {
@@ -63,6 +64,51 @@ public:
         return {b.position, b.angle, b.velocity, b.angularVelocity};
     }
     std::int64_t capsHit() const override { return world_.stats().capsHit; }
+
+    bool addJoint(const JointSpec& s) override {
+        // Only the solver carries joints (auto gives their world to it); the other methods refuse them.
+        if (!rube::movesTurningBodies(world_.def().method)) {
+            lacksJoint_ = true;
+            return false;
+        }
+        const auto ballEnd = [&](int i) { return rube::JointEnd{world_.circleId(i), {}}; };
+        rube::JointDef d;
+        switch (s.kind) {
+        case JointSpec::Kind::pin:
+            d.kind = rube::JointKind::revolute;
+            d.b = ballEnd(s.a);
+            d.localAnchorA = world_.circles()[static_cast<std::size_t>(s.a)].position;
+            d.motor = {s.motorSpeed, s.maxTorque};
+            pins_.resize(std::max(pins_.size(), static_cast<std::size_t>(s.a) + 1));
+            pins_[static_cast<std::size_t>(s.a)] = world_.addJoint(d);
+            return true;
+        case JointSpec::Kind::gear:
+            d.kind = rube::JointKind::gear;
+            d.jointA = pins_.at(static_cast<std::size_t>(s.a));
+            d.jointB = pins_.at(static_cast<std::size_t>(s.b));
+            d.ratio = s.ratio;
+            break;
+        case JointSpec::Kind::pulley:
+            d.kind = rube::JointKind::pulley;
+            d.a = ballEnd(s.a);
+            d.b = ballEnd(s.b);
+            d.groundA = s.groundA;
+            d.groundB = s.groundB;
+            d.ratio = s.ratio;
+            d.length = s.length;
+            break;
+        case JointSpec::Kind::spring:
+            d.kind = rube::JointKind::spring;
+            d.localAnchorA = s.anchor;
+            d.b = ballEnd(s.a);
+            d.stiffness = s.stiffness;
+            d.damping = s.damping;
+            d.restLength = s.restLength;
+            break;
+        }
+        world_.addJoint(d);
+        return true;
+    }
 
 private:
     static rube::WorldDef makeDef(const WorldSpec& spec, rube::Method method) {
@@ -75,6 +121,7 @@ private:
     }
 
     rube::World world_;
+    std::vector<rube::JointId> pins_; // per ball: its pin, for the gears
     std::vector<rube::BodyId> boxes_;
 };
 

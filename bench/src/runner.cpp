@@ -26,6 +26,10 @@ bool inside(const Scene& scene, Vec2 p) {
 // The measurement run: the probe and the stability flags look at the world after every step.
 void measure(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, Row& row) {
     auto sim = buildSim(scene, engine, timeStep, options);
+    if (sim->lacksJoint()) {
+        row.lacksJoint = true; // not this engine's: no row
+        return;
+    }
     auto probe = scene.probe(options.size, timeStep);
     row.bodies = sim->ballCount() + sim->boxCount(); // known even if the run times out
     std::vector<std::uint8_t> escaped(static_cast<std::size_t>(sim->ballCount()), 0);
@@ -79,7 +83,7 @@ Row runScene(const Scene& scene, const Engine& engine, double timeStep, const Ru
     RunOptions sceneOptions = options;
     sceneOptions.runTimeLimit = std::max(options.runTimeLimit, scene.runTimeLimit);
     measure(scene, engine, timeStep, sceneOptions, row);
-    if (row.timeout) return row;
+    if (row.timeout || row.lacksJoint) return row;
 
     std::vector<double> seconds{timedRun(scene, engine, timeStep, options, row.steps)};
     const double first = seconds.front();

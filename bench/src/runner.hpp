@@ -30,6 +30,7 @@ struct Row {
     std::int64_t capsHit = 0;
     int escapes = 0;
     bool nonFinite = false, timeout = false;
+    bool lacksJoint = false; ///< the engine (or method) does not have a joint the scene needs: not run, no row
 };
 
 /// Runs `scene` on `engine`: first a measurement run (the probe sees every step), then the

@@ -35,6 +35,25 @@ struct LineSpec {
     Vec2 velocity{}; ///< constant velocity of a kinematic line, m/s
 };
 
+/// A joint between balls (or a ball and the world), as the joints scenes ask for it. Engines that
+/// do not have the kind refuse it (Sim::addJoint returns false) and the scene is not run on them.
+struct JointSpec {
+    enum class Kind : std::uint8_t {
+        pin,    ///< ball `a` pinned at its centre to the world, free to turn; a motor when maxTorque > 0
+        gear,   ///< the pins of balls `a` and `b`: angle_a + ratio angle_b stays constant
+        pulley, ///< a rope from ball a over groundA and from ball b over groundB: |pa - gA| + ratio |pb - gB| = length
+        spring, ///< ball `a` on a damped spring to the fixed point `anchor`
+    };
+    Kind kind = Kind::pin;
+    int a = 0, b = -1;
+    double motorSpeed = 0.0, maxTorque = 0.0;                ///< pin: rad/s, N m
+    double ratio = 1.0;                                      ///< gear, pulley
+    Vec2 groundA{}, groundB{};                               ///< pulley
+    double length = 0.0;                                     ///< pulley, m
+    Vec2 anchor{};                                           ///< spring's fixed end
+    double stiffness = 0.0, damping = 0.0, restLength = 0.0; ///< spring: N/m, N s/m, m
+};
+
 /// A box as a scene asks for it: dynamic unless `fixed`, its mass from a density (kg/m^2).
 struct BoxSpec {
     Vec2 position{};
@@ -59,6 +78,7 @@ struct BallState {
     Vec2 position{};
     Vec2 velocity{};
     double angularVelocity = 0.0; ///< omega, rad/s, counter-clockwise (every engine here turns circles)
+    double angle = 0.0;           ///< radians turned, counter-clockwise
 };
 
 /// A box's state as read back after a step (outside the timed loop).
@@ -98,6 +118,16 @@ public:
     }
     /// Steps that hit the engine's own per-step cap (rube's event cap); 0 where there is none.
     virtual std::int64_t capsHit() const { return 0; }
+    /// Adds a joint; false (and nothing added) when the engine or method does not have its kind.
+    virtual bool addJoint(const JointSpec&) {
+        lacksJoint_ = true;
+        return false;
+    }
+    /// True once a scene asked for a joint this engine does not have: the scene is not run on it.
+    bool lacksJoint() const { return lacksJoint_; }
+
+protected:
+    bool lacksJoint_ = false;
 };
 
 /// How an engine is run: one of rube's methods over the time-step sweep, or a peer at its usual step.

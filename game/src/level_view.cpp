@@ -90,6 +90,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
     }
     drawConveyors(world, list);
     drawRopes(world, list);
+    drawJoints(world, list);
     drawRigidBodies(world, list);
     drawAirDrag(world, list);
     // Items' circles are drawn by drawItems; the plain ones here, projectiles with their arrow.
@@ -105,6 +106,7 @@ void LevelView::drawBodies(const LevelRun& run, render::DrawList& list) const {
         if (run.isProjectile(id))
             list.arrow(pt(c.position), pt(c.position + c.velocity * kArrowSeconds), 2.0f, Palette::greybox()["arrow"]);
     }
+    drawJointPins(world, list);
 }
 
 // Each item as its kind draws it.

@@ -159,8 +159,9 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
         return ExitCode::badInput;
     }
     if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
-        err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules or pivots of "
-            << options.scene << ": use auto or solver\n";
+        err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules "
+            << (scene.joints.empty() ? "or pivots" : "pivots or joints") << " of " << options.scene
+            << ": use auto or solver\n";
         return ExitCode::badInput;
     }
     if (const std::string why = methodBudgetRefusal(scene, method.value_or(scene.world.method)); !why.empty()) {

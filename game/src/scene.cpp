@@ -39,6 +39,26 @@ World buildWorld(const SceneDesc& scene) {
     for (const RigidBodyDef& body : scene.bodies) bodies.push_back(world.addBody(body));
     for (const ScenePivot& pivot : scene.pivots)
         world.addPivot({bodies[static_cast<std::size_t>(pivot.body)], pivot.localAnchor, pivot.worldAnchor});
+    std::vector<JointId> joints;
+    const auto endOf = [&](const SceneJointEnd& e) {
+        if (e.circle >= 0) return JointEnd{circles[static_cast<std::size_t>(e.circle)], {}};
+        if (e.body >= 0) return JointEnd{{}, bodies[static_cast<std::size_t>(e.body)]};
+        return JointEnd{};
+    };
+    for (const SceneJoint& joint : scene.joints) {
+        JointDef def = joint.def;
+        if (def.kind == JointKind::gear) {
+            def.jointA = joints[static_cast<std::size_t>(joint.jointA)];
+            def.jointB = joints[static_cast<std::size_t>(joint.jointB)];
+        } else {
+            def.a = endOf(joint.a);
+            def.b = endOf(joint.b);
+            def.localAnchorA = world.localPoint(def.a, joint.anchorA);
+            def.localAnchorB = world.localPoint(def.b, joint.anchorB);
+            def.referenceAngle = world.angleOf(def.b) - world.angleOf(def.a);
+        }
+        joints.push_back(world.addJoint(def));
+    }
     world.fields().waters = scene.waters;
     return world;
 }

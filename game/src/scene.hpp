@@ -33,6 +33,23 @@ struct ScenePivot {
     Vec2 worldAnchor; ///< in the world, m
 };
 
+/// One end of a [[joint]]: a circle or a rigid body by its index in SceneDesc, or the world (both -1).
+struct SceneJointEnd {
+    int circle = -1;
+    int body = -1;
+    bool isWorld() const { return circle < 0 && body < 0; }
+};
+
+/// A [[joint]] as the file gives it: ends by index, anchors as world points at the start, the
+/// coupled joints of a gear by their index in SceneDesc::joints; `def` holds the kind and its
+/// parameters (its ends, anchors and coupled joints are filled in when the World is built).
+struct SceneJoint {
+    JointDef def;
+    SceneJointEnd a, b;
+    Vec2 anchorA, anchorB; ///< world points at the start, m
+    int jointA = -1, jointB = -1;
+};
+
 /// Everything a scene file says, validated; the physics definitions are ready to hand to a World.
 /// Circles and segments refer to paths by index into `paths`, which is also the World's index.
 struct SceneDesc {
@@ -52,6 +69,8 @@ struct SceneDesc {
     std::vector<RigidBodyDef> bodies;      ///< every [[box]], then every [[capsule]]: index i is the World's body i
     std::vector<std::string> bodyNames;    ///< the `name` of each box or capsule, "" when unnamed
     std::vector<ScenePivot> pivots;        ///< [[pivot]] in file order
+    std::vector<SceneJoint> joints;        ///< [[joint]] in file order: index i is the World's joint i
+    std::vector<std::string> jointNames;   ///< the `name` of each joint, "" when unnamed
     LevelDesc level;                       ///< items, inventory, zones and goal: empty for a physics scene
     std::string physicsToml;               ///< the file's physics tables ([world], [[segment]], ...) as TOML, as read:
                                            ///< the level writer writes them back unchanged

@@ -15,9 +15,9 @@ namespace {
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
 // Every top-level key, the level's tables (item, inventory, zone, goal, hint) included, so a `[[zones]]`
 // typo is offered `zone`: one format for scenes and levels, one list.
-constexpr std::string_view kTopAndLevelKeys[] = {"name",        "description", "world",     "view", "path", "circle",
-                                                 "circle_grid", "segment",     "water",     "rope", "box",  "capsule",
-                                                 "pivot",       "item",        "inventory", "zone", "goal", "hint"};
+constexpr std::string_view kTopAndLevelKeys[] = {
+    "name", "description", "world", "view",  "path", "circle",    "circle_grid", "segment", "water", "rope",
+    "box",  "capsule",     "pivot", "joint", "item", "inventory", "zone",        "goal",    "hint"};
 constexpr std::string_view kWorldKeys[] = {"gravity",  "time_step",           "method",        "bounds",
                                            "substeps", "max_events_per_step", "resting_speed", "duration",
                                            "air_drag", "sleep_speed",         "time_to_sleep"};
@@ -247,6 +247,7 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     readSegments(root, reading);
     readRopes(root, reading);
     readRigidBodies(root, reading);
+    readJoints(root, reading);
     readLevel(root, reading);
     // A level that names no method gets "auto", the cheapest that holds for what it does; a
     // physics scene keeps the exact method, the course's reference, unless it names another.
@@ -259,7 +260,9 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
         TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
         worldTable.error(worldTable.valuePlace("method"),
                          "method '" + std::string(methodName(scene.world.method)) +
-                             "' cannot move turning boxes, capsules or pivots: use 'auto' or 'solver'");
+                             (scene.joints.empty() ? "' cannot move turning boxes, capsules or pivots"
+                                                   : "' cannot move turning boxes, capsules, pivots or joints") +
+                             ": use 'auto' or 'solver'");
     }
     // Naming a method too slow for the scene's size is an error at the name (method_budget.hpp).
     if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : "";

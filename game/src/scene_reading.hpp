@@ -30,7 +30,9 @@ void readRopes(TableReader& root, SceneReading& reading);
 
 /// Reads every [[box]], then every [[capsule]] into scene.bodies, then every [[pivot]] into scene.pivots.
 void readRigidBodies(TableReader& root, SceneReading& reading);
-/// True when the scene has bodies only the solver moves: turning boxes, capsules or pivots.
+/// Reads every [[joint]] into scene.joints (after the bodies, which joints name).
+void readJoints(TableReader& root, SceneReading& reading);
+/// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints.
 bool needsRotatingSolver(const SceneDesc& scene);
 
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.

@@ -137,7 +137,7 @@ void readRigidBodies(TableReader& root, SceneReading& reading) {
 }
 
 bool needsRotatingSolver(const SceneDesc& scene) {
-    if (!scene.pivots.empty()) return true;
+    if (!scene.pivots.empty() || !scene.joints.empty()) return true;
     for (const RigidBodyDef& b : scene.bodies)
         if (!isBlock(b)) return true;
     return false;

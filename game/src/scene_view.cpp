@@ -148,10 +148,12 @@ void SceneView::draw(const World& world, render::DrawList& list) const {
     drawSegments(world, list);
     drawConveyors(world, list);
     drawRopes(world, list);
+    drawJoints(world, list);
     drawRigidBodies(world, list);
     drawAirDrag(world, list);
     if (trails_) trails_->draw(list, palette["trail"], kTrailWidth);
     drawCircles(world, list);
+    drawJointPins(world, list);
     // Water in front of the balls, translucent, so a floating ball shows how deep it sits.
     drawWaters(world, list);
     if (impacts_)

@@ -20,6 +20,11 @@ namespace rube::game {
 void drawRopes(const World& world, render::DrawList& list);
 /// Draws every box (a turned rectangle) and capsule with a line along its own x axis, and every pivot's pin.
 void drawRigidBodies(const World& world, render::DrawList& list);
+/// Draws the joints behind the bodies: springs as coils, pulleys' ropes and wheels, belts, gear
+/// teeth turning with their wheels, pistons' cylinders and rods (joint_drawing.cpp).
+void drawJoints(const World& world, render::DrawList& list);
+/// Draws the joints' marks in front of the bodies: a hinge's pin, a weld's cross.
+void drawJointPins(const World& world, render::DrawList& list);
 
 /// Draws chevrons along every conveyor (a segment with a surface speed), pointing the way its
 /// surface runs and travelling at that speed with the world's time, so a still belt and a running one differ.

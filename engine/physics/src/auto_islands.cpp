@@ -193,6 +193,17 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
         if (c.motion == Motion::dynamic && c.sleep.asleep && dynamicCircle(c.sleep.island)) joinBoth(i, c.sleep.island);
     }
+    // Joints are the solver's: a jointed body needs it, and a joint's two ends share an island (a
+    // gear's and a belt's wheels are tied through their revolutes' ends).
+    const auto jointNode = [&](int circle, int body) {
+        return body >= 0 ? circleCount + body : dynamicCircle(circle) ? circle : -1;
+    };
+    for (const Joint& j : ctx.joints) {
+        const int a = jointNode(j.circleA, j.bodyA), b = jointNode(j.circleB, j.bodyB);
+        if (a >= 0) needs_[static_cast<std::size_t>(a)] = 1;
+        if (b >= 0) needs_[static_cast<std::size_t>(b)] = 1;
+        if (a >= 0 && b >= 0) joinBoth(a, b);
+    }
     // Friction needs two surfaces with friction (a pair's is the product): a circle with friction
     // that may reach a shared shape with friction.
     for (int i = 0; i < circleCount; ++i) {

@@ -9,7 +9,8 @@
 // Each step the bodies are grouped into islands (auto_islands: bodies that could meet within the
 // step), and each island gets its method:
 //   1. the solver, if only the solver models it: a pair that could touch with friction (a dynamic
-//      circle with friction and another shape with friction), a turning body, a pivot;
+//      circle with friction and another shape with friction), a turning body, a pivot, a joint
+//      (a joint's ends share an island);
 //   2. the solver, if exact cannot be afforded for its neighbourhood (the islands a body's size
 //      apart, a crowd forming): every event exact resolves costs a search over the n x (n + m)
 //      pairs, and it is given kExactBudget pair tests a step, that is kExactBudget / (n (n + m))
@@ -126,7 +127,7 @@ private:
     // afforded: what the island pass would choose, at the old cost. False when it does not apply
     // or exact hit its cap (everything put back; the island pass then decides).
     bool wholeWorldExact(StepContext& ctx, double dt) {
-        if (frictionPair(ctx) || anyTurning(ctx.bodies, ctx.pivots) ||
+        if (frictionPair(ctx) || anyTurning(ctx.bodies, ctx.pivots) || !ctx.joints.empty() ||
             std::any_of(stintLeft_.begin(), stintLeft_.end(), [](int left) { return left > 0; }))
             return false;
         const std::int64_t dynamic = dynamicBodies(ctx);

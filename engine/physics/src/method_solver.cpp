@@ -2,6 +2,7 @@
 // relax passes and restitution at the end (the "soft step" of Box2D v3), speculative contacts found
 // once per step through a uniform grid, and a continuous sweep for circles faster than their margin.
 #include "broadphase_grid.hpp"
+#include "joint_stage.hpp"
 #include "rigid_stage.hpp"
 #include "solver_bounce_flight.hpp"
 #include "solver_friction.hpp"
@@ -189,6 +190,8 @@ void SolverMethod::prepareBodies(const StepContext& ctx, double dt) {
         const Vec2 reach{c.radius + margin, c.radius + margin};
         circleBoxes_[i] = {c.position - reach, c.position + reach};
     }
+    // A joint on a circle turns it (a wheel on its axle, a gear): the step models rotation.
+    if (!ctx.joints.empty() && jointsTurnCircles(ctx.joints)) anyRotation_ = true;
     for (int s = 0; s < segmentCount_; ++s) {
         const Segment& seg = ctx.segments[s];
         const Vec2 v = seg.motion() == Motion::kinematic ? seg.velocity : Vec2{};
@@ -269,7 +272,7 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
                       dt / std::max(1, ctx.def.substeps), ctx.restingSpeed);
     const Vec2 up = ctx.def.gravity.lengthSquared() > 0.0 ? -ctx.def.gravity.normalized() : Vec2{0.0, 1.0};
     orderContacts(contacts_, records_, start_, inverseMass_, up, grid_.cellSize(), orderScratch_);
-    hasRigid_ = !ctx.bodies.empty();
+    hasRigid_ = !ctx.bodies.empty() || !ctx.joints.empty(); // joints are solved in the rigid stage
     if (hasRigid_) rigid_.prepare(ctx, dt);
     frictions_.clear();
     frictionBodies_.clear();
@@ -309,6 +312,7 @@ void SolverMethod::findFriction(const StepContext& ctx) {
         list(contacts_[k].b);
     }
     if (hasRigid_) rigid_.listFrictionCircles(list);
+    listJointedCircles(ctx.joints, list);
     for (const int i : rotating_)
         omega_[static_cast<std::size_t>(i)] = circles[static_cast<std::size_t>(i)].angularVelocity;
     turn_.assign(rotating_.size(), 0.0);

@@ -47,11 +47,8 @@ void solvePivots(std::span<PivotConstraint> pivots, const RigidSolverView& view,
             impulseScale = softness.impulseScale;
         }
         const double k11 = m + i * r.y * r.y, k12 = -i * r.x * r.y, k22 = m + i * r.x * r.x;
-        const double det = k11 * k22 - k12 * k12;
-        if (det == 0.0) continue;
-        const Vec2 rhs = cdot + bias;
-        // K^-1 rhs for the symmetric 2 x 2 K.
-        const Vec2 solved{(k22 * rhs.x - k12 * rhs.y) / det, (k11 * rhs.y - k12 * rhs.x) / det};
+        Vec2 solved;
+        if (!solveSymmetric2x2(k11, k12, k22, cdot + bias, solved)) continue;
         const Vec2 impulse = solved * -massScale - c.impulse * impulseScale;
         c.impulse += impulse;
         s.velocity += impulse * m;

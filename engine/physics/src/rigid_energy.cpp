@@ -62,6 +62,10 @@ void RigidStage::capBounceEnergy() {
     }
     // A pinned body is held by its pivot, which does no work but is not a contact: left alone.
     for (const PivotConstraint& p : pivots_) onlyFixed_[static_cast<std::size_t>(p.body)] = 0;
+    // Likewise a body a joint holds (a motor or a spring may do work on it).
+    if (!joints_.empty())
+        for (std::size_t i = 0; i < n; ++i)
+            if (joints_.holdsBody(static_cast<int>(i))) onlyFixed_[i] = 0;
     const double g = gravity_.length();
     for (std::size_t i = 0; i < n; ++i) {
         RigidState& s = states_[i];

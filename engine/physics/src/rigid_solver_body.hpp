@@ -48,6 +48,14 @@ struct LoadedBody {
     double inverseInertia = 0.0;
 };
 
+/// K^-1 rhs for the symmetric 2 x 2 K = [k11 k12; k12 k22] into `out`; false when K is singular.
+inline bool solveSymmetric2x2(double k11, double k12, double k22, Vec2 rhs, Vec2& out) {
+    const double det = k11 * k22 - k12 * k12;
+    if (det == 0.0) return false;
+    out = {(k22 * rhs.x - k12 * rhs.y) / det, (k11 * rhs.y - k12 * rhs.x) / det};
+    return true;
+}
+
 /// Rotates r by the rotation (cos, sin) q.
 inline Vec2 rotate(Vec2 q, Vec2 r) { return {q.x * r.x - q.y * r.y, q.y * r.x + q.x * r.y}; }
 

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace rube {
 
@@ -25,6 +27,9 @@ constexpr double kMaxWarmStartTurn = 0.25;
 /// Pivots: stiffer than contacts and less damped, as Box2D v3's joints (twice the contact hertz).
 constexpr double kPivotHertz = 120.0;
 constexpr double kPivotDampingRatio = 2.0;
+/// A pair of joint ends as one number: rigid body i as i, circle c as -1 - c.
+constexpr std::int64_t kPairBase = std::int64_t{1} << 32;
+constexpr std::int64_t kNoBody = std::numeric_limits<std::int64_t>::min();
 
 BoundingBox boundsOf(const RoundedPolygon& p, double extra) {
     BoundingBox b{p.vertices[0], p.vertices[0]};
@@ -90,6 +95,8 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     findContacts(ctx, dt);
     cache_.apply(contacts_);
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
+    // Joints are as stiff as pivots (the same softness).
+    joints_.prepare(ctx, h, pivotSoftness_);
 }
 
 void RigidStage::findContacts(const StepContext& ctx, double dt) {
@@ -107,8 +114,23 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     others_.assign(ctx.circles.size() + ctx.segments.size(), SolverBody{});
     zeros_.assign(others_.size(), 0.0);
     const RigidSolverView massView{states_, others_, zeros_, ctx.circles};
+    // Bodies a joint ties together do not collide (a chain's links overlap at their hinges), as in Box2D.
+    connected_.clear();
+    for (const Joint& j : ctx.joints) {
+        const std::int64_t a = j.bodyA >= 0 ? j.bodyA : j.circleA >= 0 ? -1 - j.circleA : kNoBody;
+        const std::int64_t b = j.bodyB >= 0 ? j.bodyB : j.circleB >= 0 ? -1 - j.circleB : kNoBody;
+        if (a == kNoBody || b == kNoBody) continue;
+        connected_.push_back(std::min(a, b) * kPairBase + std::max(a, b));
+    }
+    std::sort(connected_.begin(), connected_.end());
+    const auto tied = [&](BodySide a, BodySide b) {
+        if (connected_.empty()) return false;
+        const std::int64_t x = a.rigid ? a.index : -1 - a.index, y = b.rigid ? b.index : -1 - b.index;
+        return std::binary_search(connected_.begin(), connected_.end(), std::min(x, y) * kPairBase + std::max(x, y));
+    };
     const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const RoundedPolygon& pa,
                          const RoundedPolygon& pb, double speculative, const Material& ma, const Material& mb) {
+        if (tied(a, b)) return;
         const Manifold m = collideRoundedPolygons(pa, pb, speculative);
         if (m.count == 0) return;
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
@@ -161,6 +183,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
 
 void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std::span<const Circle> circles) {
     view_ = RigidSolverView{states_, others, omega, circles};
+    joints_.bind(view_);
 }
 
 void RigidStage::integrateVelocities(Vec2 gravityStep) {
@@ -171,11 +194,13 @@ void RigidStage::integrateVelocities(Vec2 gravityStep) {
 void RigidStage::warmStart() {
     measureApproach(contacts_, view_, substep_++);
     warmStartPivots(pivots_, view_);
+    if (!joints_.empty()) joints_.warmStart();
     warmStartRigidContacts(contacts_, view_, substepTime_, kMaxWarmStartTurn);
 }
 
 void RigidStage::solve(double h, bool useBias) {
     solvePivots(pivots_, view_, pivotSoftness_, useBias);
+    if (!joints_.empty()) joints_.solve(useBias);
     solveRigidContacts(contacts_, view_, contactSoftness_, h, useBias);
 }
 
@@ -190,6 +215,7 @@ void RigidStage::integratePositions(double h) {
         s.turn += s.omega * h;
         s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
     }
+    if (!joints_.empty()) joints_.integrateCircleTurns(h);
 }
 
 void RigidStage::applyRestitution(double threshold) {

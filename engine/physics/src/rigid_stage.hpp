@@ -5,6 +5,7 @@
 // Gauss-Seidel system over the same velocities. A world without rigid bodies never enters it.
 // Not part of the public API.
 
+#include "joint_stage.hpp"
 #include "pivot_joint.hpp"
 #include "rigid_pairs.hpp"
 #include "rigid_contacts.hpp"
@@ -98,6 +99,8 @@ private:
     std::vector<RigidContact> contacts_;
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;
+    JointStage joints_;
+    std::vector<std::int64_t> connected_; // pairs of bodies a joint ties (they do not collide)
     RigidSolverView view_;
     RigidContactSoftness contactSoftness_;
     Softness pivotSoftness_;

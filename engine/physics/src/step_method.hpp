@@ -25,6 +25,8 @@ struct StepContext {
     std::span<const Pivot> pivots = {}; ///< rigid bodies pinned to the world (the solver models them)
     std::span<const Rope> ropes =
         {}; ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
+    std::span<const Joint> joints =
+        {};             ///< the joints that act (the solver models them; auto gives their islands to it)
     bool sleep = false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
 };
 

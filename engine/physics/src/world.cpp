@@ -202,15 +202,18 @@ void World::step() {
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
+    if (!joints_.empty()) requireJointMethod(def_.method);
     // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
     // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
     const bool noneIsolated = stats_.isolatedBodies == 0;
     if (isolateNonFinite(circles_, bodies_, *finite_, stats_, false) && noneIsolated) nameFirstIsolated();
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
+    context.joints = joints_;
     // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
     // their worlds keep every circle awake, as do methods that move every body anyway.
-    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && method_->keepsSleep();
+    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && joints_.empty() &&
+                    method_->keepsSleep();
     // Only the solver puts circles to sleep, so a world that never let it pays no pass to wake them.
     if (!context.sleep && mayHaveSleepers_) wakeAll(circles_);
     mayHaveSleepers_ = context.sleep;

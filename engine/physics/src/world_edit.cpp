@@ -43,13 +43,6 @@ std::vector<std::uint8_t> filled(const SlotMap& map) {
     return out;
 }
 
-template <class Id>
-Id idOfSlot(const HandleTable& table, int slot) {
-    if (slot < 0 || slot >= table.slotCount()) throw std::out_of_range("no such slot");
-    const int entry = table.entryOfSlot(slot);
-    return Id{entry, const_cast<HandleTable&>(table).entry(entry).generation};
-}
-
 } // namespace
 
 // Wakes the islands of sleepers touching segment `s` (within a centimetre): what rested on it falls.
@@ -191,6 +184,7 @@ void World::syncJoints() {
         }
     }
     for (Pivot& pivot : pivots_) pivot.body = slot(pivot.bodyId);
+    syncMachineJoints();
 }
 
 // ---- remove ----
@@ -204,6 +198,7 @@ void World::remove(CircleId id) {
         const Rope& r = rope(RopeId{e, entry.generation});
         if (r.circleId == id || r.otherId == id) remove(RopeId{e, entry.generation});
     }
+    removeJointsOf(JointEnd{id, {}});
     if (tables_->circles.entry(id.index).enabled) leaveCircle(id.index);
     tables_->circles.retire(id.index);
     syncJoints(); // the other ropes' slots moved
@@ -229,6 +224,7 @@ void World::remove(BodyId id) {
         const HandleTable::Entry& entry = tables_->pivots.entry(e);
         if (entry.live && pivot(PivotId{e, entry.generation}).bodyId == id) remove(PivotId{e, entry.generation});
     }
+    removeJointsOf(JointEnd{{}, id});
     if (tables_->bodies.entry(id.index).enabled) leaveBody(id.index);
     tables_->bodies.retire(id.index);
     syncJoints(); // the other pivots' slots moved

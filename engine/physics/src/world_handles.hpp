@@ -92,15 +92,24 @@ Id handleOf(HandleTable& table, int index) {
     return Id{index, table.entry(index).generation};
 }
 
+/// The handle of the thing in `slot` of `table`'s array; throws std::out_of_range past the end.
+template <class Id>
+Id idOfSlot(const HandleTable& table, int slot) {
+    if (slot < 0 || slot >= table.slotCount()) throw std::out_of_range("no such slot");
+    const int entry = table.entryOfSlot(slot);
+    return Id{entry, const_cast<HandleTable&>(table).entry(entry).generation};
+}
+
 /// The world's tables, and the state of what waits outside the arrays (by table entry).
 struct WorldTables {
-    HandleTable circles, segments, bodies, ropes, pivots;
+    HandleTable circles, segments, bodies, ropes, pivots, joints;
     std::vector<Circle> parkedCircles;                    ///< per circle entry: its state while disabled
     std::vector<Segment> parkedSegments;                  ///< per segment entry, likewise
     std::vector<RigidBody> parkedBodies;                  ///< per body entry, likewise
     std::vector<Rope> parkedRopes;                        ///< per rope entry: the rope while it does not act
     std::vector<Pivot> parkedPivots;                      ///< per pivot entry, likewise
-    std::vector<std::uint8_t> ropeOn, pivotOn;            ///< per entry: its own switch (setEnabled)
+    std::vector<Joint> parkedJoints;                      ///< per joint entry, likewise
+    std::vector<std::uint8_t> ropeOn, pivotOn, jointOn;   ///< per entry: its own switch (setEnabled)
     std::vector<std::uint8_t> circleEscaped, bodyEscaped; ///< per entry: escaped before it was disabled (counted once)
     std::vector<int> thrusterSlots;                       ///< per thruster: its circle's slot this step, -1 none
 };

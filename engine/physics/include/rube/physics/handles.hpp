@@ -1,5 +1,5 @@
 #pragma once
-/// Handles: how a caller names a body, segment, rope or pivot of a World. A handle is an index into
+/// Handles: how a caller names a body, segment, rope, pivot or joint of a World. A handle is an index into
 /// the world's handle table plus a generation: removing the thing bumps its entry's generation, so a
 /// handle kept after a remove is detected (World::isValid says false, accessors throw
 /// std::invalid_argument) even when a later add reuses the entry (Box2D v3's ids).
@@ -24,12 +24,14 @@ struct SegmentTag;
 struct BodyTag;
 struct RopeTag;
 struct PivotTag;
+struct JointTag;
 
 using CircleId = Handle<CircleTag>;   ///< a circle of a World
 using SegmentId = Handle<SegmentTag>; ///< a segment of a World
 using BodyId = Handle<BodyTag>;       ///< a rigid body (box, capsule) of a World
 using RopeId = Handle<RopeTag>;       ///< a rope of a World
 using PivotId = Handle<PivotTag>;     ///< a pivot of a World
+using JointId = Handle<JointTag>;     ///< a joint (revolute, spring, gear, ...) of a World
 
 } // namespace rube
 

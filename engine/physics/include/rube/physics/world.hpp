@@ -4,6 +4,7 @@
 #include "rube/physics/body.hpp"
 #include "rube/physics/fields.hpp"
 #include "rube/physics/handles.hpp"
+#include "rube/physics/joint.hpp"
 #include "rube/physics/pivot.hpp"
 #include "rube/physics/rigid_body.hpp"
 #include "rube/physics/rope.hpp"
@@ -128,6 +129,11 @@ public:
     /// Pins a rigid body to the world at a point, free to turn about it, and returns the pivot's handle;
     /// throws std::invalid_argument for a body handle that is not valid.
     PivotId addPivot(const PivotDef& def);
+    /// Adds a joint (joint.hpp) and returns its handle; throws std::invalid_argument for an end that is
+    /// not valid, both ends the same body or both the world, a gear whose joints are not a revolute and
+    /// a revolute or prismatic, or a parameter out of its range (negative stiffness, a limit's lower
+    /// above its upper, a pulley's ratio or length not positive).
+    JointId addJoint(const JointDef& def);
     /// Adds a scripted path for kinematic bodies and returns its index (paths are never removed).
     int addPath(KinematicPath path);
     /// Adds a rope between existing circles (or a circle and a fixed anchor) and returns its handle;
@@ -136,16 +142,18 @@ public:
     /// Cuts a rope: from the next step on it no longer acts (cutting it again does nothing).
     void cutRope(RopeId rope);
 
-    /// Removes a circle, and every rope attached to it. Its handle (and theirs) is stale from now on.
+    /// Removes a circle, and every rope and joint attached to it. Its handle (and theirs) is stale from now on.
     void remove(CircleId circle);
     /// Removes a segment.
     void remove(SegmentId segment);
-    /// Removes a rigid body, and every pivot that pins it.
+    /// Removes a rigid body, and every pivot and joint that holds it.
     void remove(BodyId body);
     /// Removes a rope.
     void remove(RopeId rope);
     /// Removes a pivot.
     void remove(PivotId pivot);
+    /// Removes a joint, and every gear that couples it.
+    void remove(JointId joint);
     /// Disables (false) or enables again (true) a circle: a disabled one takes no part in the step
     /// (no motion, no contacts, its ropes do not act) and keeps its state until it is enabled.
     void setEnabled(CircleId circle, bool enabled);
@@ -157,18 +165,22 @@ public:
     void setEnabled(RopeId rope, bool enabled);
     /// A disabled pivot does not act (it also waits while its body is disabled).
     void setEnabled(PivotId pivot, bool enabled);
+    /// A disabled joint does not act (it also waits while an end, or a joint a gear couples, waits).
+    void setEnabled(JointId joint, bool enabled);
     /// True while the handle names something of this world (not removed, not null).
     bool isValid(CircleId id) const;
     bool isValid(SegmentId id) const; ///< as isValid(CircleId)
     bool isValid(BodyId id) const;    ///< as isValid(CircleId)
     bool isValid(RopeId id) const;    ///< as isValid(CircleId)
     bool isValid(PivotId id) const;   ///< as isValid(CircleId)
+    bool isValid(JointId id) const;   ///< as isValid(CircleId)
     /// True unless disabled; throws std::invalid_argument for a stale handle (as every accessor below).
     bool isEnabled(CircleId id) const;
     bool isEnabled(SegmentId id) const; ///< as isEnabled(CircleId)
     bool isEnabled(BodyId id) const;    ///< as isEnabled(CircleId)
     bool isEnabled(RopeId id) const;    ///< as isEnabled(CircleId); a rope whose own switch is on
     bool isEnabled(PivotId id) const;   ///< as isEnabled(CircleId); a pivot whose own switch is on
+    bool isEnabled(JointId id) const;   ///< as isEnabled(CircleId); a joint whose own switch is on
 
     /// The circle's state (also while disabled).
     const Circle& circle(CircleId id) const;
@@ -176,18 +188,33 @@ public:
     const RigidBody& body(BodyId id) const;     ///< the rigid body's state
     const Rope& rope(RopeId id) const;          ///< the rope (its slots are -1 while it waits)
     const Pivot& pivot(PivotId id) const;       ///< the pivot (its slot is -1 while it waits)
+    const Joint& joint(JointId id) const;       ///< the joint (its slots are -1 while it waits)
     /// Its slot in circles() (and in Impact), -1 while disabled.
     int slot(CircleId id) const;
     int slot(SegmentId id) const; ///< its slot in segments(), -1 while disabled
     int slot(BodyId id) const;    ///< its slot in bodies(), -1 while disabled
     int slot(RopeId id) const;    ///< its slot in ropes(), -1 while it does not act
     int slot(PivotId id) const;   ///< its slot in pivots(), -1 while it does not act
+    int slot(JointId id) const;   ///< its slot in joints(), -1 while it does not act
     /// The handle of the circle in `slot` of circles(); throws std::out_of_range past the end.
     CircleId circleId(int slot) const;
     SegmentId segmentId(int slot) const; ///< the handle of segments()[slot]
     BodyId bodyId(int slot) const;       ///< the handle of bodies()[slot]
     RopeId ropeId(int slot) const;       ///< the handle of ropes()[slot]
     PivotId pivotId(int slot) const;     ///< the handle of pivots()[slot]
+    JointId jointId(int slot) const;     ///< the handle of joints()[slot]
+
+    /// The point `worldPoint` in the frame of joint end `end` as it stands now (the world's frame
+    /// for the world): what JointDef::localAnchorA and B hold.
+    Vec2 localPoint(JointEnd end, Vec2 worldPoint) const;
+    /// The point `localPoint` of `end`'s frame in the world now.
+    Vec2 worldPoint(JointEnd end, Vec2 localPoint) const;
+    /// The angle of `end` now (0 for the world), rad.
+    double angleOf(JointEnd end) const;
+    /// A joint's coordinate now: a revolute's and a weld's angle (b's less a's, less the reference
+    /// angle), a prismatic's slide along its axis, a spring's length, a pulley's
+    /// |pA - groundA| + ratio |pB - groundB|, a gear's coordA + ratio coordB.
+    double jointCoordinate(JointId id) const;
 
     /// The caller's own value for a circle (0 until set; also CircleDef::userValue).
     std::uint64_t userValue(CircleId id) const;
@@ -249,6 +276,8 @@ public:
     std::span<const Rope> ropes() const { return ropes_; }
     /// The pivots that act (enabled, body enabled), in insertion order.
     std::span<const Pivot> pivots() const { return pivots_; }
+    /// The joints that act (enabled, ends enabled), in insertion order.
+    std::span<const Joint> joints() const { return joints_; }
 
 private:
     void moveKinematicBodies();
@@ -264,6 +293,10 @@ private:
     void leaveCircle(int entry);
     void leaveBody(int entry);
     void syncJoints();
+    void syncMachineJoints();
+    void removeJointsOf(JointEnd end);
+    bool jointActs(const Joint& joint) const;
+    double coordinate(const Joint& joint) const;
 
     WorldDef def_;
     std::vector<Circle> circles_;
@@ -272,6 +305,7 @@ private:
     std::vector<KinematicPath> paths_;
     std::vector<Rope> ropes_;
     std::vector<Pivot> pivots_;
+    std::vector<Joint> joints_;
     std::vector<RopeStart> ropeStarts_; ///< per rope, refilled before each step that has ropes
     Fields fields_;
     std::vector<Impact> impacts_;
@@ -294,6 +328,9 @@ bool anyTurning(std::span<const RigidBody> bodies, std::span<const Pivot> pivots
 /// Throws std::logic_error unless `method` models these bodies and pivots: lecture 3's axis-aligned
 /// blocks (fixed-rotation boxes) suit every method; turning bodies, capsules and pivots need solver or auto.
 void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots);
+
+/// Throws std::logic_error unless `method` carries joints: only solver and auto do.
+void requireJointMethod(Method method);
 
 /// A 64-bit FNV-1a hash of every body's position and velocity bits: equal hashes mean
 /// bit-identical states (the determinism check, as Box2D's determinism test does).

@@ -1,0 +1,51 @@
+#pragma once
+// Internal: the joints' part of the solver's step. RigidStage calls it at its own points of the
+// substep loop (prepare, bind, warm start, solve, relax, positions), so joints, pivots and contacts
+// form one Gauss-Seidel system over the same velocities. Each joint goes through its kind's
+// JointBehaviour (joint_solver.hpp). Not part of the public API.
+
+#include "joint_solver.hpp"
+#include "step_method.hpp"
+
+#include <vector>
+
+namespace rube {
+
+class JointStage {
+public:
+    /// Sets up the step's joints as their ends stand at its start; impulses carried over when the
+    /// joints are the ones of the last step.
+    void prepare(const StepContext& ctx, double h, const Softness& softness);
+    /// Binds the solver's bodies for the substeps.
+    void bind(const RigidSolverView& view);
+    bool empty() const { return constraints_.empty(); }
+    void warmStart();
+    /// solvePosition of every joint when `useBias`, else solveVelocity.
+    void solve(bool useBias);
+    /// After the substep's positions moved: the jointed circles' turns.
+    void integrateCircleTurns(double h);
+    /// True when a joint holds rigid body `index` (it is not free between its contacts).
+    bool holdsBody(int index) const;
+
+private:
+    std::vector<JointConstraint> constraints_;
+    std::vector<Joint> last_; // the joints of the last step, to match the warm starts
+    std::vector<double> circleTurn_;
+    std::vector<int> circles_; // jointed circles
+    JointStep step_;
+    JointView view_;
+};
+
+/// True when some joint ends on a circle: the solver must turn circles this step.
+bool jointsTurnCircles(std::span<const Joint> joints);
+
+/// Calls list(i) for each circle a joint ends on.
+template <class List>
+void listJointedCircles(std::span<const Joint> joints, List list) {
+    for (const Joint& j : joints) {
+        if (j.circleA >= 0) list(j.circleA);
+        if (j.circleB >= 0) list(j.circleB);
+    }
+}
+
+} // namespace rube

@@ -204,7 +204,7 @@ TEST_CASE("the same level, budget and seed give byte-identical JSON; another see
 }
 
 TEST_CASE("the budget is shared equally among the subsets, a small subset searched whole") {
-    const SceneDesc level = loadLevel(RUBE_GAME_LEVELS_DIR "/pegs.toml"); // none, heavy, bouncy, both
+    const SceneDesc level = loadLevel(RUBE_GAME_LEVELS_DIR "/trampoline.toml"); // none, bouncy, heavy, both
     const SearchSpace space(level, {});
     REQUIRE(space.subsetCount() == 4);
     for (const std::uint64_t budget : {3ull, 10ull, 400ull, 1000ull, 5000ull}) {
@@ -229,7 +229,7 @@ TEST_CASE("the budget is shared equally among the subsets, a small subset search
 }
 
 TEST_CASE("an index in the space and its candidate are one to one") {
-    const SceneDesc level = loadLevel(RUBE_GAME_LEVELS_DIR "/pegs.toml"); // two kinds: four subsets
+    const SceneDesc level = loadLevel(RUBE_GAME_LEVELS_DIR "/trampoline.toml"); // two kinds: four subsets
     const SearchSpace space(level, {});
     std::set<Candidate> seen;
     const std::uint64_t step = std::max<std::uint64_t>(1, space.size() / 5000);

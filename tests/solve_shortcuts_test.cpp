@@ -1,0 +1,61 @@
+// Shortcuts `rube solve` found in shipped levels, and the fixes: the level as it was is searched
+// again and the shortcut is found; the level as it ships is searched whole and none is.
+#include "scene_file.hpp"
+#include "solve_report.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+using namespace rube::game;
+
+namespace {
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+SolveReport solve(const SceneDesc& level, const std::string& scriptFile, std::uint64_t budget) {
+    const ScriptLoad intended = loadScriptFile(scriptFile, level);
+    REQUIRE(intended.script);
+    const SearchSpace space(level, {});
+    SolveOptions options;
+    options.budget = budget;
+    options.jobs = 2;
+    return makeReport(searchLevel(level, space, options), space, partsUsed(*intended.script));
+}
+
+} // namespace
+
+TEST_CASE("pegs: a heavy ball dropped beside the top pin was a shortcut; the level now gives none") {
+    const std::string file = RUBE_GAME_LEVELS_DIR "/pegs.toml";
+    const std::string script = RUBE_GAME_LEVELS_DIR "/pegs.solution.toml";
+    std::string text = readFile(file);
+    // The level as it was: a heavy ball in the inventory beside the bouncy one.
+    const std::string inventory = "[inventory]\nbouncy = 1\n";
+    REQUIRE(text.find(inventory) != std::string::npos);
+    std::string before = text;
+    before.replace(before.find(inventory), inventory.size(), inventory + "heavy = 1\n");
+    const SceneLoad old = parseScene(before, "pegs.toml");
+    REQUIRE(old.ok());
+    // 1200 runs search the heavy ball's 300 placements whole (an equal share of the budget each).
+    const SolveReport was = solve(*old.scene, script, 1200);
+    REQUIRE(planSearch(SearchSpace(*old.scene, {}), 1200).whole[2]);
+    const auto heavyAlone = std::find_if(was.groups.begin(), was.groups.end(),
+                                         [](const SolutionGroup& g) { return g.uses == "heavy"; });
+    REQUIRE(heavyAlone != was.groups.end());
+    CHECK_FALSE(heavyAlone->shortcut.empty());
+
+    const SceneLoad now = loadSceneFile(file);
+    REQUIRE(now.ok());
+    const SearchSpace space(*now.scene, {});
+    const SolveReport is = solve(*now.scene, script, space.size());
+    CHECK(is.exhaustive);
+    CHECK_FALSE(is.result.solutions.empty());
+    CHECK(is.shortcuts() == 0);
+}

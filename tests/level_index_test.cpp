@@ -58,13 +58,14 @@ TEST_CASE("the level index reports bad entries at their place", "[index]") {
                                      "[[level]]\nfile = \"ramp.toml\"\ntitle = \"b\"\ndifficulty = 1\n",
                                      "i.toml", kLevels)) == "i.toml:6:8: 'ramp.toml' is listed already, at line 1");
     // The missing title comes first (at the table, 1:1); the typo is the second error.
-    const LevelIndexLoad typo =
-        parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml", kLevels);
+    const LevelIndexLoad typo = parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n",
+                                                "i.toml", kLevels);
     REQUIRE(typo.errors.size() == 2);
     CHECK(typo.errors[1].format() == "i.toml:3:1: unknown key 'titel' in [[level]] (did you mean 'title'?)");
     CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
                                      "solve_budget = 10\nsolve_fraction = 1.5\n",
-                                     "i.toml", kLevels)) == "i.toml:6:18: solve_fraction must be between 0 and 1, got 1.5");
+                                     "i.toml", kLevels)) ==
+          "i.toml:6:18: solve_fraction must be between 0 and 1, got 1.5");
     CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
                                      "solve_fraction = 0.5\n",
                                      "i.toml", kLevels)) ==

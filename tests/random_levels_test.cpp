@@ -45,7 +45,8 @@ std::vector<SceneDesc> shippedLevels() {
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
         const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos)
+        // levels/index.toml lists the levels; it is not one.
+        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos && name != "index.toml")
             files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());

@@ -6,19 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 using namespace rube::game;
 
 namespace {
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 SolveReport solve(const SceneDesc& level, const std::string& scriptFile, std::uint64_t budget) {
     const ScriptLoad intended = loadScriptFile(scriptFile, level);
@@ -32,10 +23,11 @@ SolveReport solve(const SceneDesc& level, const std::string& scriptFile, std::ui
 
 } // namespace
 
-TEST_CASE("pegs: a heavy ball dropped beside the top pin was a shortcut; the level now gives none") {
+TEST_CASE("pegs gave a heavy ball that was a shortcut dropped beside the top pin, and now gives none") {
     const std::string file = RUBE_GAME_LEVELS_DIR "/pegs.toml";
     const std::string script = RUBE_GAME_LEVELS_DIR "/pegs.solution.toml";
-    std::string text = readFile(file);
+    SceneError error;
+    const std::string text = readTextFile(file, error).value();
     // The level as it was: a heavy ball in the inventory beside the bouncy one.
     const std::string inventory = "[inventory]\nbouncy = 1\n";
     REQUIRE(text.find(inventory) != std::string::npos);

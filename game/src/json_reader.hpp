@@ -17,8 +17,8 @@ struct JsonValue {
     enum class Type { null, boolean, number, string, array, object };
     Type type = Type::null;
     bool boolean = false;
-    std::string text;                       ///< a string's characters, or a number as written
-    std::vector<JsonValue> array;           ///< in order
+    std::string text;                        ///< a string's characters, or a number as written
+    std::vector<JsonValue> array;            ///< in order
     std::map<std::string, JsonValue> object; ///< by key
 
     /// The member `key` of an object, or nullptr.

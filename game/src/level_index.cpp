@@ -12,8 +12,8 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {"level"};
-constexpr std::string_view kLevelKeys[] = {"file",         "title",         "difficulty",
-                                           "introduces",   "solve_budget",  "solve_fraction"};
+constexpr std::string_view kLevelKeys[] = {"file",       "title",        "difficulty",
+                                           "introduces", "solve_budget", "solve_fraction"};
 
 // `introduces` names part kinds; a typo would make a tutorial claim a part nobody has.
 std::vector<std::string> readIntroduces(TableReader& level) {
@@ -65,7 +65,8 @@ LevelIndexLoad parseLevelIndex(std::string_view text, const std::string& fileNam
         entry.solveFraction = level.number("solve_fraction", NumberRange::unit());
         // A fraction means nothing without the budget it was measured with (rube solve --budget).
         if (entry.solveFraction && !entry.solveBudget)
-            level.error(level.valuePlace("solve_fraction"), "solve_fraction needs solve_budget, the runs it was measured with");
+            level.error(level.valuePlace("solve_fraction"),
+                        "solve_fraction needs solve_budget, the runs it was measured with");
         if (!file || !title || !difficulty) continue;
         entry.file = folder / *file;
         entry.title = *title;

@@ -102,7 +102,8 @@ constexpr const char* kPlayFooter =
 
 constexpr const char* kMainFooter =
     "Scene files are TOML: see levels/physics/ for examples and game/scene-format.md for every key.\n"
-    "Run 'rube run --help', 'rube play --help' or 'rube check --help' for a command's options.\n"
+    "Run 'rube run --help', 'rube play --help', 'rube check --help', 'rube items --help' or\n"
+    "  'rube solve --help' for a command's options.\n"
     "Exit status: 0 ok, 1 a run failed, 2 bad input or usage (every message is one line on stderr).";
 
 constexpr const char* kSolveFooter =
@@ -115,12 +116,14 @@ constexpr const char* kSolveFooter =
     "Each candidate is checked by the placement rules of the window and of scripts, then run headless\n"
     "  as 'rube run --script' runs it, to the goal's time limit, stopping at the goal or once nothing\n"
     "  has moved for 1 s with no click, timer, path or thruster still to come.\n"
-    "Search: every candidate when the space holds at most --budget; else --budget candidates drawn at\n"
-    "  random (a subset in proportion to its size, then each choice uniformly) from --seed: the same\n"
-    "  level, options, budget and seed give the same result and byte-identical --json.\n"
+    "Search: every candidate when the space holds at most --budget. Else each subset of the inventory\n"
+    "  gets an equal share of the budget (one smaller than its share is searched whole, and leaves\n"
+    "  the rest to the others), and a larger one that many candidates drawn at random from --seed:\n"
+    "  the same level, options, budget and seed give the same result and byte-identical --json.\n"
     "Report: the solutions grouped by the parts and clicks they use; a group is a shortcut when it\n"
     "  uses fewer parts than the level's NAME.solution.toml, or parts or clicks it does not; the\n"
-    "  solve fraction (solutions over candidates the rules allow); the most robust solution, whose\n"
+    "  solve fraction (solutions over candidates the rules allow, a sampled subset weighted by its\n"
+    "  size); the most robust solution, whose\n"
     "  grid neighbours (one step on one axis) most often solve too. --scripts DIR writes every\n"
     "  solution as DIR/LEVEL-NUMBER.solution.toml, which 'rube run LEVEL --script' replays to the\n"
     "  same goal step.\n"
@@ -466,7 +469,10 @@ SolveCommand::SolveCommand(CLI::App& app) {
         "solve", "Search a level's placements and clicks: solutions, shortcuts, solve fraction, most robust");
     command_->footer(kSolveFooter);
     command_->add_option("level", options_.level, "The level file (.toml) to search")->required()->type_name("LEVEL");
-    command_->add_option("--budget", options_.search.budget, "Runs: the whole space if it is no larger, else this many random candidates (default 2000)")
+    command_
+        ->add_option("--budget", options_.search.budget,
+                     "Runs: the whole space if it is no larger, else this many, shared equally among the inventory "
+                     "subsets (default 2000)")
         ->type_name("RUNS")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000}));
     command_->add_option("--seed", options_.search.seed, "Seed of the random search (default 1)")->type_name("N");
@@ -482,16 +488,22 @@ SolveCommand::SolveCommand(CLI::App& app) {
     command_->add_option("--json", options_.json, "Write the result as JSON to FILE")->type_name("FILE");
     command_->add_option("--scripts", options_.scripts, "Write every solution as DIR/LEVEL-NUMBER.solution.toml")
         ->type_name("DIR");
-    stepOption_ = command_->add_option("--step", step_, "Grid step in the zones, m (default: a quarter of each part's size)")
+    stepOption_ = command_
+                      ->add_option("--step", step_,
+                                   "Grid step in the zones, m (default: a quarter of each part's size)")
                       ->type_name("M")
                       ->check(CLI::Range(1e-3, 100.0));
-    command_->add_option("--angle-step", options_.search.space.angleStep, "Degrees between a turning part's angles (default 15)")
+    command_
+        ->add_option("--angle-step", options_.search.space.angleStep,
+                     "Degrees between a turning part's angles (default 15)")
         ->type_name("DEG")
         ->check(CLI::Range(0.1, 180.0));
     command_->add_option("--aim-step", options_.search.space.aimStep, "Degrees between a cannon's aims (default 5)")
         ->type_name("DEG")
         ->check(CLI::Range(0.1, 180.0));
-    command_->add_option("--action-every", options_.search.space.actionEvery, "Seconds between the steps a click is tried at (default 0.5)")
+    command_
+        ->add_option("--action-every", options_.search.space.actionEvery,
+                     "Seconds between the steps a click is tried at (default 0.5)")
         ->type_name("S")
         ->check(CLI::Range(1e-3, 1000.0));
 }

@@ -48,8 +48,8 @@ ExitCode writeScripts(const std::string& folder, const SearchSpace& space, const
                                    " of a search with budget " + std::to_string(result.budget) + " and seed " +
                                    std::to_string(result.seed) + "; the goal is reached at step " +
                                    std::to_string(s.goalFrame) + ".\n";
-        const std::filesystem::path file =
-            std::filesystem::path(folder) / (result.level + "-" + std::to_string(s.number) + ".solution.toml");
+        const std::filesystem::path file = std::filesystem::path(folder) /
+                                           (result.level + "-" + std::to_string(s.number) + ".solution.toml");
         std::string reason;
         if (!writeTextFileAtomically(file, writeScript(solutionScript(space, result, s), header), reason)) {
             err << "rube solve: cannot write " << file.string() << ": " << reason << '\n';
@@ -127,8 +127,10 @@ ExitCode solveCommand(const SolveCommandOptions& options, std::ostream& out, std
     const SolveReport report = makeReport(result, space, intendedSolution(options.level, level));
     out << reportText(report, space);
     if (options.merge.empty()) {
-        char text[128];
-        std::snprintf(text, sizeof text, "%llu headless runs (neighbours included) in %.3g s: %.0f runs/s on %d %s\n",
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "%llu headless runs (neighbours included; refused candidates make none) in %.3g s: %.0f runs/s "
+                      "on %d %s\n",
                       static_cast<unsigned long long>(result.runs), seconds,
                       seconds > 0 ? static_cast<double>(result.runs) / seconds : 0.0, options.search.jobs,
                       options.search.jobs == 1 ? "thread" : "threads");

@@ -13,12 +13,12 @@ namespace rube::game {
 
 /// What `rube solve` was asked to do.
 struct SolveCommandOptions {
-    std::string level;               ///< the level file
-    SolveOptions search;             ///< the space, budget, seed, jobs and slice
-    std::string json;                ///< --json FILE, empty for none
-    std::string scripts;             ///< --scripts DIR: every solution as DIR/LEVEL-NUMBER.solution.toml
-    std::vector<std::string> merge;  ///< --merge: slices' JSON to join instead of searching
-    bool progress = false;           ///< a progress line on `err` (only when it is a terminal)
+    std::string level;              ///< the level file
+    SolveOptions search;            ///< the space, budget, seed, jobs and slice
+    std::string json;               ///< --json FILE, empty for none
+    std::string scripts;            ///< --scripts DIR: every solution as DIR/LEVEL-NUMBER.solution.toml
+    std::vector<std::string> merge; ///< --merge: slices' JSON to join instead of searching
+    bool progress = false;          ///< a progress line on `err` (only when it is a terminal)
 };
 
 /// Runs `rube solve`: ok when a solution was found, failed when none was (or a file could not be

@@ -172,12 +172,14 @@ std::string reportJson(const SolveReport& report, const SearchSpace& space) {
     const SearchResult& r = report.result;
     std::ostringstream out;
     out << "{\n  \"level\": " << jsonString(r.level) << ",\n  \"search\": \""
-        << (report.exhaustive ? "exhaustive" : "sampled") << "\",\n  \"space\": " << r.space << ",\n  \"budget\": " << r.budget
-        << ",\n  \"seed\": " << r.seed << ",\n  \"shard\": [" << r.shardIndex << ", " << r.shardCount << "]"
+        << (report.exhaustive ? "exhaustive" : "sampled") << "\",\n  \"space\": " << r.space
+        << ",\n  \"budget\": " << r.budget << ",\n  \"seed\": " << r.seed << ",\n  \"shard\": [" << r.shardIndex << ", "
+        << r.shardCount << "]"
         << ",\n  \"candidates\": " << r.tried() << ",\n  \"valid\": " << r.valid()
         << ",\n  \"solved\": " << r.solutions.size() << ",\n  \"solve_fraction\": " << fraction(report.solveFraction)
-        << ",\n  \"found\": " << (r.solutions.empty() ? "false" : "true") << ",\n  \"intended\": "
-        << (report.intended ? jsonString(report.intended->label()) : "null") << ",\n  \"subsets\": [";
+        << ",\n  \"found\": " << (r.solutions.empty() ? "false" : "true")
+        << ",\n  \"intended\": " << (report.intended ? jsonString(report.intended->label()) : "null")
+        << ",\n  \"subsets\": [";
     for (std::size_t i = 0; i < r.subsets.size(); ++i) {
         const SubsetTally& t = r.subsets[i];
         const int subset = static_cast<int>(i);

@@ -30,10 +30,10 @@ std::string shortcutReason(const PartsUsed& used, const PartsUsed& intended);
 
 /// The solutions that use the same parts and clicks.
 struct SolutionGroup {
-    std::string uses;            ///< PartsUsed::label()
+    std::string uses; ///< PartsUsed::label()
     std::size_t solutions = 0;
-    std::uint64_t first = 0;     ///< the number of its first solution
-    std::string shortcut;        ///< why it is a shortcut, or ""
+    std::uint64_t first = 0; ///< the number of its first solution
+    std::string shortcut;    ///< why it is a shortcut, or ""
 };
 
 /// A search's result read as a report.

@@ -23,8 +23,7 @@ bool stillness(const LevelRun& run) {
             return false;
     for (const RigidBody& b : world.bodies())
         if (b.motion == Motion::dynamic &&
-            (b.velocity.length() > kQuietSpeed ||
-             std::abs(b.angularVelocity) * b.halfExtents.length() > kQuietSpeed))
+            (b.velocity.length() > kQuietSpeed || std::abs(b.angularVelocity) * b.halfExtents.length() > kQuietSpeed))
             return false;
     for (const Thruster& t : world.fields().thrusters)
         if (t.end > world.time()) return false;
@@ -87,7 +86,9 @@ RunOutcome runCandidate(const SceneDesc& level, const ScriptDesc& script, std::i
     return out;
 }
 
-bool SearchPlan::exhaustive() const { return std::all_of(whole.begin(), whole.end(), [](bool w) { return w; }); }
+bool SearchPlan::exhaustive() const {
+    return std::all_of(whole.begin(), whole.end(), [](bool w) { return w; });
+}
 
 int SearchPlan::subsetOf(std::uint64_t number) const {
     std::size_t s = 0;
@@ -179,7 +180,9 @@ SearchResult searchLevel(const SceneDesc& level, const SearchSpace& space, const
     const auto numberOf = [&](std::uint64_t i) { return shard + i * shards; };
 
     const auto start = std::chrono::steady_clock::now();
-    const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     std::vector<RunOutcome> outcomes(count);
     std::vector<std::string> keys(count);
     std::atomic<std::uint64_t> solved{0};
@@ -196,14 +199,13 @@ SearchResult searchLevel(const SceneDesc& level, const SearchSpace& space, const
         },
         progress ? std::function<void(std::uint64_t)>(tick) : nullptr);
     result.subsets.assign(static_cast<std::size_t>(space.subsetCount()), {});
-    result.runs = count;
 
     // Robustness: each solution's grid neighbours, run unless this slice ran them already.
     std::unordered_map<std::string, bool> known;
     for (std::uint64_t i = 0; i < count; ++i) {
         SubsetTally& tally = result.subsets[static_cast<std::size_t>(plan.subsetOf(numberOf(i)))];
         ++tally.tried;
-        if (outcomes[i].valid) ++tally.valid;
+        if (outcomes[i].valid) ++tally.valid, ++result.runs;
         if (outcomes[i].goal) ++tally.solved;
         known.emplace(keys[i], outcomes[i].goal.has_value());
         if (outcomes[i].goal) result.solutions.push_back({numberOf(i), *outcomes[i].goal, 0, 0});
@@ -218,14 +220,16 @@ SearchResult searchLevel(const SceneDesc& level, const SearchSpace& space, const
             if (!known.contains(key) && queued.emplace(key, toRun.size()).second) toRun.push_back(n);
         }
     }
-    std::vector<char> neighbourSolves(toRun.size(), 0);
+    std::vector<char> neighbourSolves(toRun.size(), 0), neighbourRan(toRun.size(), 0);
     parallelFor(
         toRun.size(), options.jobs,
         [&](std::uint64_t i) {
-            neighbourSolves[i] = runCandidate(level, space.script(toRun[i]), space.steps()).goal.has_value();
+            const RunOutcome outcome = runCandidate(level, space.script(toRun[i]), space.steps());
+            neighbourSolves[i] = outcome.goal.has_value();
+            neighbourRan[i] = outcome.valid;
         },
         nullptr);
-    result.runs += toRun.size();
+    for (const char ran : neighbourRan) result.runs += ran != 0;
     for (std::size_t s = 0; s < result.solutions.size(); ++s)
         for (const Candidate& n : around[s]) {
             const std::string key = SearchSpace::key(n);

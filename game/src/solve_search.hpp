@@ -14,9 +14,9 @@ namespace rube::game {
 
 /// What one run of a candidate came to.
 struct RunOutcome {
-    bool valid = false;                 ///< every placement passed the rules and every action could be taken
-    std::optional<std::int64_t> goal;   ///< the step the goal was reached in
-    std::int64_t steps = 0;             ///< steps run (fewer than the limit when it stopped early)
+    bool valid = false;               ///< every placement passed the rules and every action could be taken
+    std::optional<std::int64_t> goal; ///< the step the goal was reached in
+    std::int64_t steps = 0;           ///< steps run (fewer than the limit when it stopped early)
 };
 
 /// How long nothing must move before a run is given up, s: longer than a bucket's rest (0.5 s), so a
@@ -79,14 +79,15 @@ struct SubsetTally {
 
 /// The outcome of a search, or of one slice of it.
 struct SearchResult {
-    std::string level;        ///< the level's name
-    std::uint64_t space = 0;  ///< candidates in the space (saturated at 2^62)
+    std::string level;       ///< the level's name
+    std::uint64_t space = 0; ///< candidates in the space (saturated at 2^62)
     std::uint64_t budget = 0;
     std::uint64_t seed = 0;
     int shardIndex = 0, shardCount = 1;
     std::vector<SubsetTally> subsets;     ///< by subset of the space
     std::vector<FoundSolution> solutions; ///< by number
-    std::uint64_t runs = 0;   ///< headless runs made, neighbours included (not part of the result proper)
+    std::uint64_t runs =
+        0; ///< headless runs made (a refused candidate makes none), neighbours included; not in the JSON
     /// Candidates run, and those allowed, over all subsets.
     std::uint64_t tried() const;
     std::uint64_t valid() const;
@@ -97,7 +98,8 @@ struct SearchResult {
 };
 
 /// Progress: candidates done of the slice's total, solutions so far, seconds since the start.
-using SearchProgress = std::function<void(std::uint64_t done, std::uint64_t total, std::uint64_t solved, double seconds)>;
+using SearchProgress =
+    std::function<void(std::uint64_t done, std::uint64_t total, std::uint64_t solved, double seconds)>;
 
 /// The candidate with number `number` of `result`'s search.
 Candidate candidateOf(const SearchSpace& space, const SearchResult& result, std::uint64_t number);

@@ -199,7 +199,8 @@ Candidate SearchSpace::sample(int subset, std::uint64_t seed, std::uint64_t numb
     rng.next();
     Candidate c;
     c.subset = subset;
-    for (std::uint32_t r : radices(c.subset)) c.digits.push_back(r == 0 ? 0 : static_cast<std::uint32_t>(rng.next() % r));
+    for (std::uint32_t r : radices(c.subset))
+        c.digits.push_back(r == 0 ? 0 : static_cast<std::uint32_t>(rng.next() % r));
     return c;
 }
 
@@ -242,7 +243,7 @@ std::vector<Candidate> SearchSpace::neighbours(const Candidate& candidate) const
         case Axis::aim: {
             const ActorAxis& a = actors_[static_cast<std::size_t>(axes[d].index)];
             if (!a.aims[v].angle) break; // kept or aimed at an item: no step to take
-            std::uint32_t angles = 0; // aims 1 .. angles are the angles, all the way round
+            std::uint32_t angles = 0;    // aims 1 .. angles are the angles, all the way round
             while (angles + 1 < r && a.aims[angles + 1].angle) ++angles;
             with(d, v > 1 ? v - 1 : angles);
             with(d, v < angles ? v + 1 : 1);

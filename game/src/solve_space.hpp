@@ -32,13 +32,13 @@ struct GridPoint {
 /// One placeable kind of the inventory, with the grid it is tried on.
 struct KindAxis {
     ItemKind kind = nullptr;
-    int count = 0;                    ///< the inventory's count: subsets use 0 .. count of it
-    double step = 0.0;                ///< grid step, m
-    std::vector<GridPoint> points;    ///< every grid point of every zone, zone by zone, row by row
-    std::vector<Vec2> positions;      ///< the centre each point puts the part at
-    std::vector<int> columns, rows;   ///< each zone's grid size
-    std::vector<double> angles{0.0};  ///< degrees; {0} for a part that does not turn
-    bool turnsAround = false;         ///< the angles go all the way round (a neighbour of the last is the first)
+    int count = 0;                   ///< the inventory's count: subsets use 0 .. count of it
+    double step = 0.0;               ///< grid step, m
+    std::vector<GridPoint> points;   ///< every grid point of every zone, zone by zone, row by row
+    std::vector<Vec2> positions;     ///< the centre each point puts the part at
+    std::vector<int> columns, rows;  ///< each zone's grid size
+    std::vector<double> angles{0.0}; ///< degrees; {0} for a part that does not turn
+    bool turnsAround = false;        ///< the angles go all the way round (a neighbour of the last is the first)
 };
 
 /// A cannon's aim: kept as the level has it, turned to an angle, or aimed at an item on an arc.
@@ -50,9 +50,9 @@ struct AimChoice {
 
 /// One fixed part a click acts on.
 struct ActorAxis {
-    std::string item;               ///< its name
+    std::string item; ///< its name
     ActionKind verb = ActionKind::fire;
-    std::vector<AimChoice> aims;    ///< cannons: {keep, angles..., targets...}; else empty
+    std::vector<AimChoice> aims;      ///< cannons: {keep, angles..., targets...}; else empty
     std::vector<std::int64_t> frames; ///< -1 (never) first, then the steps it may be acted on at
 };
 

@@ -21,7 +21,7 @@ using namespace rube;
 
 constexpr int kWidth = 960, kHeight = 600;
 constexpr float kLeft = 260, kRight = 900, kTop = 70, kBottom = 540; // the plot, pixels from the top-left
-constexpr double kDecades = 5;                                          // 1e-5 .. 1
+constexpr double kDecades = 5;                                       // 1e-5 .. 1
 
 // A point given from the top-left, as the camera (world = pixels, y up) wants it.
 render::Point at(float x, float y) { return {x, static_cast<float>(kHeight) - y}; }
@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
     const render::Color ink{40, 40, 40, 255}, grid{170, 170, 170, 255}, bar{90, 110, 150, 255};
     render::DrawList list;
     list.text(20, 16, "Measured difficulty: solve fraction of each level (rube solve), in the order played", ink, 2);
-    list.text(20, 40, "bar: share of valid candidates that solve it, log scale; d = the designer's difficulty 1-5", ink, 1);
+    list.text(20, 40, "bar: share of valid candidates that solve it, log scale; d = the designer's difficulty 1-5", ink,
+              1);
     for (int d = 0; d <= static_cast<int>(kDecades); ++d) {
         const float x = kLeft + static_cast<float>(d) / static_cast<float>(kDecades) * (kRight - kLeft);
         list.line(at(x, kTop - 6), at(x, kBottom), 1.0f, grid);

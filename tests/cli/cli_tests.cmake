@@ -95,7 +95,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, check and items (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, check, items and solve (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -268,6 +268,7 @@ rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
 # solution), and the script reads against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
 list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the level index, not a level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)
   set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)

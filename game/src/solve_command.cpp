@@ -96,7 +96,9 @@ ExitCode solveCommand(const SolveCommandOptions& options, std::ostream& out, std
             std::string why;
             std::optional<SearchResult> slice = readResultJson(*text, why);
             if (!slice) {
-                err << file << ":" << why << '\n';
+                // A syntax error comes with its line:col, a result missing its fields without.
+                const bool placed = !why.empty() && why.front() >= '0' && why.front() <= '9';
+                err << file << (placed ? ":" : ": ") << why << '\n';
                 return ExitCode::badInput;
             }
             if (slice->level != level.name || slice->space != space.size()) {

@@ -297,3 +297,16 @@ rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT
 # A level without a [goal] has nothing to miss: `rube run` says so and exits 0.
 rube_cli_test("run a level without a goal" "run|${lint}/warnings.toml|--no-render|--steps|20" 0
               "-DSTDOUT_MATCH=goal: +none \\(the level has no \\[goal\\]\\)\n" -DSTDERR_EMPTY=ON)
+
+# `rube solve`'s bad input: one line, status 2, before any search.
+rube_cli_test("solve missing level" "solve|no-such-level.toml" 2 "-DSTDERR_LINE=no-such-level.toml: cannot open file")
+rube_cli_test("solve a scene without a goal" "solve|${RUBE_LEVELS}/bounce.toml" 2
+              "-DSTDERR_LINE=rube solve: ${RUBE_LEVELS}/bounce.toml has no [goal]: there is nothing to solve")
+rube_cli_test("solve --json into a missing folder" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--json|${RUBE_CLI_OUT}/no-such-folder/r.json" 2
+              "-DSTDERR_LINE=rube solve: --json ${RUBE_CLI_OUT}/no-such-folder/r.json: no folder ${RUBE_CLI_OUT}/no-such-folder")
+rube_cli_test("solve --merge of a file that is not a result" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--merge|${RUBE_CLI_DIR}/bad-syntax.toml" 2
+              "-DSTDERR_LINE=${RUBE_CLI_DIR}/bad-syntax.toml:1:1: expected a value")
+rube_cli_test("solve --merge excludes --budget" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--merge|x.json|--budget|5" 2
+              "-DSTDERR_LINE=rube: --merge excludes --budget (the slices hold the search's own) (see 'rube solve --help')")
+rube_cli_test("solve --shard out of range" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--shard|2/2" 2
+              "-DSTDERR_LINE=rube: --shard: expected I/N with 0 <= I < N (the I-th of N slices, counted from 0), got '2/2' (see 'rube solve --help')")

@@ -85,6 +85,52 @@ TEST_CASE("the drop level's solutions are exactly the grid points within R + r o
         }
 }
 
+TEST_CASE("the fan-aim level's solutions are exactly the angles whose ray from the ball meets the target") {
+    constexpr double kBallRadius = 0.25; // the bouncy ball's
+    constexpr double kPi = 3.14159265358979323846;
+    const std::string original = readFile(RUBE_SOLVE_TESTS_DIR "/fan-aim.toml");
+    int solvedLevels = 0;
+    for (const Vec2 target : {Vec2{5, 1.5}, Vec2{4.3, -1.3}, Vec2{6, 0.3}}) {
+        CAPTURE(target.x, target.y);
+        std::string text = original;
+        const std::string from = "position = [5, 1.5]";
+        text.replace(text.find(from), from.size(),
+                     "position = [" + scriptNumber(target.x) + ", " + scriptNumber(target.y) + "]");
+        const SceneLoad load = parseScene(text, "fan-aim.toml");
+        REQUIRE(load.ok());
+        SpaceOptions cut;
+        cut.step = 100.0; // one point: the zone's centre
+        cut.angleStep = 5.0;
+        const SearchSpace space(*load.scene, cut);
+        REQUIRE(space.kinds()[0].positions.size() == 1);
+        SolveOptions options;
+        options.space = cut;
+        options.budget = 1000;
+        const SearchResult result = searchLevel(*load.scene, space, options);
+        REQUIRE(planSearch(space, options.budget).exhaustive());
+        const Vec2 ball{1, 0};
+        std::set<double> expected, found;
+        for (const double degrees : space.kinds()[0].angles) {
+            const Vec2 d = Vec2::fromAngle(degrees * kPi / 180.0);
+            const Vec2 fromFan = ball - space.kinds()[0].positions[0];
+            const double across = std::abs(d.cross(fromFan)), along = d.dot(fromFan);
+            REQUIRE(std::abs(across - 0.6) > 1e-3); // the ball is clearly in or out of the column
+            const Vec2 w = target - ball;
+            const double miss = std::abs(d.cross(w)) - (0.4 + kBallRadius);
+            REQUIRE(std::abs(miss) > 1e-2); // the ray clearly meets or misses the target
+            if (along > 0 && across <= 0.6 && d.dot(w) > 0 && miss < 0) expected.insert(degrees);
+        }
+        for (const FoundSolution& s : result.solutions) {
+            const ScriptDesc script = space.script(candidateOf(space, result, s.number));
+            REQUIRE(script.placements.size() == 1);
+            found.insert(script.placements[0].angleDegrees);
+        }
+        CHECK(found == expected);
+        if (!expected.empty()) ++solvedLevels;
+    }
+    CHECK(solvedLevels >= 2);
+}
+
 TEST_CASE("the grid steps by a quarter of the part and keeps the part inside the zone") {
     const SceneDesc level = dropLevel(0.5, 0.4);
     const SearchSpace space(level, {});

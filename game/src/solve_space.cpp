@@ -129,11 +129,14 @@ SearchSpace::SearchSpace(const SceneDesc& level, const SpaceOptions& options)
     for (const ItemDesc& item : level.level.items) {
         const std::optional<ActionKind> click = item.kind->clickAction();
         if (!click || item.name.empty()) continue;
+        // A part the level's clicks leave out is never clicked; a cannon's aim, editing, stays.
+        const bool clickable = level.level.clickable(item.name);
+        if (!clickable && !item.kind->plays(PartRole::fire)) continue;
         ActorAxis actor;
         actor.item = item.name;
         actor.verb = *click;
         actor.frames.push_back(-1);
-        for (std::int64_t f = 0; f < steps_; f += every) actor.frames.push_back(f);
+        for (std::int64_t f = 0; clickable && f < steps_; f += every) actor.frames.push_back(f);
         if (item.kind->plays(PartRole::fire)) {
             actor.aims.push_back({});
             const int n = static_cast<int>(std::floor(360.0 / options.aimStep + 1e-9));

@@ -65,4 +65,18 @@ TEST_CASE("the level index reports bad entries at their place", "[index]") {
                                      "i.toml", kLevels)) == "i.toml:6:8: 'ramp.toml' is listed already, at line 1");
     CHECK(anyError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitel = \"a\"\ndifficulty = 1\n", "i.toml", kLevels),
                    "i.toml:3:1: unknown key 'titel' in [[level]] (did you mean 'title'?)"));
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
+                                     "solve_budget = 10\nsolve_fraction = 1.5\n",
+                                     "i.toml", kLevels)) ==
+          "i.toml:6:18: solve_fraction must be between 0 and 1, got 1.5");
+    CHECK(firstError(parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
+                                     "solve_fraction = 0.5\n",
+                                     "i.toml", kLevels)) ==
+          "i.toml:5:18: solve_fraction needs solve_budget, the runs it was measured with");
+    const LevelIndexLoad measured = parseLevelIndex("[[level]]\nfile = \"ramp.toml\"\ntitle = \"x\"\ndifficulty = 1\n"
+                                                    "solve_budget = 10\nsolve_fraction = 0.25\n",
+                                                    "i.toml", kLevels);
+    REQUIRE(measured.levels);
+    CHECK(measured.levels->front().solveBudget == 10);
+    CHECK(measured.levels->front().solveFraction == 0.25);
 }

@@ -646,3 +646,27 @@ TEST_CASE("a domino that tips onto a target marks it hit, one that stands does n
     CHECK_FALSE(stands.goalStep());
     CHECK(stands.events().empty());
 }
+
+TEST_CASE("a level's clicks name the parts a click may act on, and scripts that click others are refused", "[level]") {
+    const std::string head = "name = \"t\"\n";
+    const std::string items = "[[item]]\nkind = \"cannon\"\nname = \"gun\"\nposition = [0, 1]\n"
+                              "[[item]]\nkind = \"target\"\nname = \"flag\"\nposition = [5, 1]\n";
+    CHECK(firstError(head + "clicks = \"gun\"\n" + items) ==
+          "t.toml:2:10: clicks must be an array of item names, got string");
+    CHECK(firstError(head + "clicks = [\"gnu\"]\n" + items) ==
+          "t.toml:2:11: unknown item 'gnu' in clicks (did you mean 'gun'?)");
+    CHECK(firstError(head + "clicks = [\"flag\"]\n" + items) ==
+          "t.toml:2:11: clicks names 'flag', a target, which no click acts on");
+    const SceneDesc none = parseLevel(head + "clicks = []\n" + items);
+    CHECK_FALSE(none.level.clickable("gun"));
+    CHECK(parseLevel(head + "clicks = [\"gun\"]\n" + items).level.clickable("gun"));
+    CHECK(parseLevel(head + items).level.clickable("gun")); // no clicks key: every part
+    // A script's click on it is refused where it is written; an aim is editing, not a click.
+    const ScriptLoad fire = parseScript("level = \"t\"\n[[action]]\nstep = 3\ndo = \"fire\"\nitem = \"gun\"\n",
+                                        "s.toml", none);
+    REQUIRE_FALSE(fire.errors.empty());
+    CHECK(fire.errors.front().format() == "s.toml:5:8: level 't' lets no click act on 'gun' (its clicks: none)");
+    CHECK(
+        parseScript("level = \"t\"\n[[action]]\nstep = 0\ndo = \"aim\"\nitem = \"gun\"\nangle = 30\n", "s.toml", none)
+            .script.has_value());
+}

@@ -251,3 +251,16 @@ TEST_CASE("play: every kind of action a loaded script takes is recorded in the s
     CHECK_THAT(recorded, Catch::Contains("do = \"cut\"\nitem = \"rope\""));
     CHECK(replayHash(level, recorded, s.run()->steps()) == stateHash(s.run()->world()));
 }
+
+TEST_CASE("play: a click on a part the level's clicks leave out does nothing but say so", "[play]") {
+    // chain-reaction has clicks = []: its bomb must be set off by the switch, not by a click.
+    const SceneDesc level = loadLevel("chain-reaction");
+    PlaySession s(level, "chain-reaction.toml", kFrame);
+    s.key(Key::space, KeyAction::press);
+    for (int i = 0; i < 5; ++i) s.step();
+    click(s, {0.0, 0.25}); // the bomb
+    CHECK(s.message() == "this level lets no click act on 'tnt'");
+    for (int i = 0; i < 5; ++i) s.step();
+    CHECK_FALSE(s.run()->states()[static_cast<std::size_t>(s.run()->find("tnt"))].detonatedAt);
+    CHECK_THAT(s.recordedScript(), !Catch::Contains("detonate"));
+}

@@ -6,6 +6,10 @@
 
 namespace rube::game {
 
+bool LevelDesc::clickable(std::string_view name) const {
+    return !clicks || std::find(clicks->begin(), clicks->end(), name) != clicks->end();
+}
+
 int LevelDesc::find(std::string_view name) const {
     for (std::size_t i = 0; i < items.size(); ++i)
         if (!name.empty() && items[i].name == name) return static_cast<int>(i);

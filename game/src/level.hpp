@@ -45,6 +45,12 @@ struct LevelDesc {
     std::vector<Zone> zones;                           ///< where placements may go
     std::optional<Goal> goal;                          ///< absent for plain physics scenes
     std::vector<Hint> hints;                           ///< [[hint]]s in file order
+    /// `clicks`: the fixed parts a click may act on while the machine runs (fire a cannon, set off a
+    /// bomb, flip a switch, fan, magnet or rocket), by name; absent, every one. A designer closes a
+    /// shortcut with it, as with a part limit: `clicks = []` leaves the machine to do the work.
+    std::optional<std::vector<std::string>> clicks;
+    /// True when a click may act on the item called `name` (the level's `clicks` allow it).
+    bool clickable(std::string_view name) const;
     /// True when the file used any level feature, so `rube run` plays it as a level.
     bool isLevel() const { return goal.has_value() || !items.empty() || !inventory.empty() || !zones.empty(); }
     /// The index of the item called `name`, or -1.

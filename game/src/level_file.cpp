@@ -168,8 +168,47 @@ std::string readBodyName(TableReader& table, SceneReading& reading, Need need) {
     return *name;
 }
 
+// `clicks`: names of fixed items a click acts on (their kind has a click action).
+void readClicks(TableReader& root, SceneReading& reading) {
+    const toml::node* node = root.find("clicks");
+    if (!node) return;
+    const toml::array* array = node->as_array();
+    if (!array) {
+        root.error(root.valuePlace("clicks"),
+                   "clicks must be an array of item names, got " + std::string(typeName(*node)));
+        return;
+    }
+    const LevelDesc& level = reading.scene.level;
+    std::vector<std::string_view> usable;
+    for (const ItemDesc& item : level.items)
+        if (item.kind->clickAction() && !item.name.empty()) usable.push_back(item.name);
+    std::vector<std::string> names;
+    for (const toml::node& element : *array) {
+        const auto* name = element.as_string();
+        const SourcePlace place = placeOf(element.source());
+        if (!name) {
+            reading.diag.error(place, "clicks must hold item names (strings), got " + std::string(typeName(element)));
+            continue;
+        }
+        if (std::find(usable.begin(), usable.end(), name->get()) == usable.end()) {
+            const int item = level.find(name->get());
+            reading.diag.error(
+                place, item < 0 ? "unknown item '" + name->get() + "' in clicks" +
+                                      unknownNameHint(name->get(), usable, "a click acts on",
+                                                      "the level has no part a click acts on")
+                                : "clicks names '" + name->get() + "', a " +
+                                      std::string(itemKindName(level.items[static_cast<std::size_t>(item)].kind)) +
+                                      ", which no click acts on");
+            continue;
+        }
+        names.push_back(name->get());
+    }
+    reading.scene.level.clicks = std::move(names);
+}
+
 void readLevel(TableReader& root, SceneReading& reading) {
     for (const toml::table* table : root.arrayOfTables("item")) readItem(*table, reading);
+    readClicks(root, reading);
     readInventory(root, reading);
     readZones(root, reading);
     readGoal(root, reading);

@@ -12,7 +12,8 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kTopKeys[] = {"level"};
-constexpr std::string_view kLevelKeys[] = {"file", "title", "difficulty", "introduces"};
+constexpr std::string_view kLevelKeys[] = {"file",       "title",        "difficulty",
+                                           "introduces", "solve_budget", "solve_fraction"};
 
 // `introduces` names part kinds; a typo would make a tutorial claim a part nobody has.
 std::vector<std::string> readIntroduces(TableReader& level) {
@@ -60,6 +61,12 @@ LevelIndexLoad parseLevelIndex(std::string_view text, const std::string& fileNam
         const std::optional<std::string> title = level.string("title", Need::required);
         const std::optional<std::int64_t> difficulty = level.integer("difficulty", 1, 5, Need::required);
         entry.introduces = readIntroduces(level);
+        entry.solveBudget = level.integer("solve_budget", 1, 1'000'000'000);
+        entry.solveFraction = level.number("solve_fraction", NumberRange::unit());
+        // A fraction means nothing without the budget it was measured with (rube solve --budget).
+        if (entry.solveFraction && !entry.solveBudget)
+            level.error(level.valuePlace("solve_fraction"),
+                        "solve_fraction needs solve_budget, the runs it was measured with");
         if (!file || !title || !difficulty) continue;
         entry.file = folder / *file;
         entry.title = *title;

@@ -4,6 +4,7 @@
 
 #include "scene_errors.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -19,6 +20,8 @@ struct IndexedLevel {
     int difficulty = 1;                  ///< 1 (a first tutorial) to 5 (a long chain reaction)
     std::vector<std::string> introduces; ///< part kinds this level is the first to give or show
     SourcePlace place;                   ///< where its [[level]] table begins in the index
+    std::optional<std::int64_t> solveBudget; ///< runs `rube solve` measured the solve fraction with (seed 1)
+    std::optional<double> solveFraction;     ///< the share of valid candidates that solve it, as measured
 };
 
 /// The outcome of reading an index: its levels in order when there are no errors.
@@ -27,8 +30,9 @@ struct LevelIndexLoad {
     std::vector<SceneError> errors;                  ///< every error found, top of the file first
 };
 
-/// Reads an index: unknown keys, a missing file, a level listed twice, a difficulty outside 1..5 and
-/// an unknown part kind in `introduces` are errors at their place.
+/// Reads an index: unknown keys, a missing file, a level listed twice, a difficulty outside 1..5,
+/// an unknown part kind in `introduces`, a solve_fraction outside 0..1 or without a solve_budget
+/// are errors at their place.
 LevelIndexLoad loadLevelIndex(const std::filesystem::path& indexFile);
 
 /// The same from text; `fileName` is what errors are reported under, `folder` what files resolve against.

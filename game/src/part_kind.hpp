@@ -138,6 +138,9 @@ public:
     virtual bool placeable() const { return false; }
     /// True when a placement of it takes an angle (the player turns it).
     virtual bool turns() const { return false; }
+    /// The turn after which it is the same part again, degrees: a board's ends are alike, so half a
+    /// turn; a fan or rocket pushes one way, so a whole one. `rube solve` searches angles within it.
+    virtual double turnPeriod() const { return 360.0; }
     /// True when the file must name it (goals and scripts point at it).
     virtual bool needsName() const { return false; }
     /// True when it plays `role`.
@@ -175,6 +178,9 @@ public:
     virtual void beforeStep(LevelRun& run, int item) const { (void)run, (void)item; }
     /// After each step: its timers (a bomb's fuse, a cannon's fire_at).
     virtual void afterStep(LevelRun& run, int item) const { (void)run, (void)item; }
+    /// True while a timer of its own will still act (a fuse not yet burnt, a fire_at not yet come):
+    /// `rube solve` ends a run when nothing moves only when no part waits.
+    virtual bool waits(const ItemDesc& item, const ItemState& state) const { return (void)item, (void)state, false; }
     /// A ball touched it at `point` (`by` names the ball, as LevelRun::nameOf does): targets and
     /// switches report it, a bomb on impact goes off.
     virtual void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const {

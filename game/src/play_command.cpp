@@ -3,6 +3,7 @@
 #include "play_command.hpp"
 
 #include "frame_recorder.hpp"
+#include "json_reader.hpp"
 #include "level_view.hpp"
 #include "run_interrupt.hpp"
 #include "scene_errors.hpp"
@@ -32,15 +33,6 @@ const char* eventName(EventKind kind) {
     case EventKind::goal: return "goal";
     }
     return "";
-}
-
-std::string jsonString(const std::string& text) {
-    std::string quoted = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') quoted += '\\';
-        quoted += c;
-    }
-    return quoted + "\"";
 }
 
 std::string jsonNumber(double value) {

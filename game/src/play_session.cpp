@@ -164,7 +164,8 @@ void PlaySession::useItemAtCursor() {
             "magnet");
         return;
     }
-    if (const std::string spent = desc.kind->spent(desc, state); !spent.empty()) say(spent, "magnet");
+    if (!level_.level.clickable(desc.name)) say("this level lets no click act on '" + desc.name + "'", "magnet");
+    else if (const std::string spent = desc.kind->spent(desc, state); !spent.empty()) say(spent, "magnet");
     else takeByHand(*desc.kind->clickAction(), item);
 }
 

@@ -13,11 +13,11 @@ namespace rube::game {
 namespace {
 
 constexpr std::string_view kWaterKeys[] = {"min", "max", "density", "drag"};
-// Every top-level key, the level's tables (item, inventory, zone, goal, hint) included, so a `[[zones]]`
-// typo is offered `zone`: one format for scenes and levels, one list.
+// Every top-level key, the level's tables (item, inventory, zone, goal, hint) and clicks included, so a
+// `[[zones]]` typo is offered `zone`: one format for scenes and levels, one list.
 constexpr std::string_view kTopAndLevelKeys[] = {
     "name", "description", "world", "view",  "path", "circle",    "circle_grid", "segment", "water", "rope",
-    "box",  "capsule",     "pivot", "joint", "item", "inventory", "zone",        "goal",    "hint"};
+    "box",  "capsule",     "pivot", "joint", "item", "inventory", "zone",        "goal",    "hint", "clicks"};
 constexpr std::string_view kWorldKeys[] = {"gravity",  "time_step",           "method",        "bounds",
                                            "substeps", "max_events_per_step", "resting_speed", "duration",
                                            "air_drag", "sleep_speed",         "time_to_sleep"};

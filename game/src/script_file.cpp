@@ -55,6 +55,15 @@ void checkStriker(TableReader& expect, const std::string& name, const SceneDesc&
                                               unknownNameHint(name, names, "the level has", "the level names nothing"));
 }
 
+// A click's action (fire, detonate, toggle, fire-when) on a part the level's `clicks` leave out.
+void checkClickable(TableReader& table, const std::string& name, const SceneDesc& level) {
+    if (level.level.clickable(name) || level.level.find(name) < 0) return;
+    std::string allowed;
+    for (const std::string& click : *level.level.clicks) allowed += (allowed.empty() ? "" : ", ") + click;
+    table.error(table.valuePlace("item"), "level '" + level.name + "' lets no click act on '" + name +
+                                              "' (its clicks: " + (allowed.empty() ? "none" : allowed) + ")");
+}
+
 void readCapture(TableReader& root, ScriptDesc& script) {
     const toml::table* table = root.table("capture", "[capture] with size and every");
     if (!table) return;
@@ -203,9 +212,15 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         if (!a.target.empty()) checkItem(action, "target", a.target, level, PartRole::aimTarget);
         break;
     }
-    case ActionKind::fire: checkItem(action, "item", a.item, level, PartRole::fire); break;
-    case ActionKind::detonate: checkItem(action, "item", a.item, level, PartRole::detonate); break;
-    case ActionKind::toggle: checkItem(action, "item", a.item, level, PartRole::toggle); break;
+    case ActionKind::fire:
+        if (checkItem(action, "item", a.item, level, PartRole::fire)) checkClickable(action, a.item, level);
+        break;
+    case ActionKind::detonate:
+        if (checkItem(action, "item", a.item, level, PartRole::detonate)) checkClickable(action, a.item, level);
+        break;
+    case ActionKind::toggle:
+        if (checkItem(action, "item", a.item, level, PartRole::toggle)) checkClickable(action, a.item, level);
+        break;
     case ActionKind::cut:
         // Ropes are not items: they are the level's [[rope]] tables, named there.
         if (level.findRope(a.item) < 0) {
@@ -219,7 +234,7 @@ void readAction(const toml::table& table, Diagnostics& diag, const SceneDesc& le
         break;
     case ActionKind::fireWhen:
         // The cannon keeps its aim; only the moment of firing is worked out, when the action is taken.
-        checkItem(action, "item", a.item, level, PartRole::fire);
+        if (checkItem(action, "item", a.item, level, PartRole::fire)) checkClickable(action, a.item, level);
         a.target = action.string("target", Need::required).value_or("");
         if (!a.target.empty()) checkItem(action, "target", a.target, level, PartRole::aimTarget);
         break;

@@ -95,7 +95,7 @@ rube_cli_test("run trace into missing folder" "run|${RUBE_LEVELS}/bounce.toml|--
 
 # Usage errors are status 2 and one line, whatever CLI11's own code for them would be.
 rube_cli_test("usage no command" "" 2 "-DSTDERR_LINE=rube: A subcommand is required (see 'rube --help')")
-rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, edit, check and items (see 'rube --help')")
+rube_cli_test("usage unknown command" "frobnicate" 2 "-DSTDERR_LINE=rube: unknown command 'frobnicate': the commands are run, play, edit, check, items and solve (see 'rube --help')")
 rube_cli_test("usage run without scene" "run|--no-render" 2 "-DSTDERR_LINE=rube: scene is required (see 'rube run --help')")
 rube_cli_test("usage bad steps" "run|${RUBE_LEVELS}/bounce.toml|--steps|ten" 2
               "-DSTDERR_LINE=rube: --steps: expected a whole number of steps, 0 or more, got 'ten' (see 'rube run --help')")
@@ -378,3 +378,15 @@ rube_cli_test("usage --zones without --out" "run|${RUBE_GAME_LEVELS}/ramp.toml|-
               "-DSTDERR_LINE=rube: --zones requires --out or --video (see 'rube run --help')")
 rube_cli_test("help run explains steps, frames and the level options" "run|--help" 0
               "-DSTDOUT_MATCH=--labels .*--zones .*A step is one step of the simulation, a frame one picture.*step,time,body,item,x,y,vx,vy,angle,omega,radius.*'not reached in\n  time'")
+# `rube solve`'s bad input: one line, status 2, before any search.
+rube_cli_test("solve missing level" "solve|no-such-level.toml" 2 "-DSTDERR_LINE=no-such-level.toml: cannot open file")
+rube_cli_test("solve a scene without a goal" "solve|${RUBE_LEVELS}/bounce.toml" 2
+              "-DSTDERR_LINE=rube solve: ${RUBE_LEVELS}/bounce.toml has no [goal]: there is nothing to solve")
+rube_cli_test("solve --json into a missing folder" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--json|${RUBE_CLI_OUT}/no-such-folder/r.json" 2
+              "-DSTDERR_LINE=rube solve: --json ${RUBE_CLI_OUT}/no-such-folder/r.json: no folder ${RUBE_CLI_OUT}/no-such-folder")
+rube_cli_test("solve --merge of a file that is not a result" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--merge|${RUBE_CLI_DIR}/bad-syntax.toml" 2
+              "-DSTDERR_LINE=${RUBE_CLI_DIR}/bad-syntax.toml:1:1: expected a value")
+rube_cli_test("solve --merge excludes --budget" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--merge|x.json|--budget|5" 2
+              "-DSTDERR_LINE=rube: --merge excludes --budget (the slices hold the search's own) (see 'rube solve --help')")
+rube_cli_test("solve --shard out of range" "solve|${PROJECT_SOURCE_DIR}/levels/ramp.toml|--shard|2/2" 2
+              "-DSTDERR_LINE=rube: --shard: expected I/N with 0 <= I < N (the I-th of N slices, counted from 0), got '2/2' (see 'rube solve --help')")

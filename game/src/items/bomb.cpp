@@ -76,6 +76,9 @@ public:
         const BombParams& p = run.items()[static_cast<std::size_t>(item)].params.as<BombParams>();
         if (p.trigger == Trigger::timer && run.world().time() >= p.fuse - 1e-9) trigger(run, item);
     }
+    bool waits(const ItemDesc& item, const ItemState& state) const override {
+        return item.params.as<BombParams>().trigger == Trigger::timer && !state.detonatedAt;
+    }
     void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
         (void)point, (void)by;
         if (run.items()[static_cast<std::size_t>(item)].params.as<BombParams>().trigger == Trigger::impact)

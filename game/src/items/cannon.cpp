@@ -83,6 +83,9 @@ public:
         if (fireAt && !run.states()[static_cast<std::size_t>(item)].fired && run.world().time() >= *fireAt - 1e-9)
             run.fire(item);
     }
+    bool waits(const ItemDesc& item, const ItemState& state) const override {
+        return (item.params.as<CannonParams>().fireAt && !state.fired) || state.timedShot.has_value();
+    }
     void trigger(LevelRun& run, int item) const override { run.fire(item); }
     std::optional<ActionKind> clickAction() const override { return ActionKind::fire; }
     std::string spent(const ItemDesc& item, const ItemState& state) const override {

@@ -144,6 +144,7 @@ class BoardKind : public PartKind {
 public:
     bool placeable() const override { return true; }
     bool turns() const override { return true; }
+    double turnPeriod() const override { return 180.0; } // its two ends are alike
     ItemDesc make(Vec2 position) const override { return made(position, BoardParams{length()}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;

@@ -1,0 +1,31 @@
+# `rube solve --scripts`: every solution it writes replays with `rube run --script` to the goal at
+# the step the search saw it reached (the step its header names), and the JSON lists as many.
+#   cmake -DRUBE=<rube> -DLEVEL=<level.toml> -DBUDGET=<runs> -DOUT=<folder> -P replay.cmake
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+execute_process(COMMAND "${RUBE}" solve "${LEVEL}" --budget ${BUDGET} --scripts "${OUT}/scripts" --json "${OUT}/result.json"
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "rube solve exited ${status}: ${out}${err}")
+endif()
+if(NOT err STREQUAL "")
+  message(FATAL_ERROR "rube solve wrote to stderr, which is not a terminal here: ${err}")
+endif()
+file(GLOB scripts "${OUT}/scripts/*.solution.toml")
+list(LENGTH scripts count)
+file(READ "${OUT}/result.json" json)
+string(REGEX MATCH "\"solved\": ([0-9]+)" _ "${json}")
+if(NOT CMAKE_MATCH_1 EQUAL count OR count EQUAL 0)
+  message(FATAL_ERROR "the JSON says ${CMAKE_MATCH_1} solutions, ${count} scripts were written")
+endif()
+foreach(script IN LISTS scripts)
+  file(READ "${script}" text)
+  string(REGEX MATCH "the goal is reached at step ([0-9]+)" _ "${text}")
+  set(step "${CMAKE_MATCH_1}")
+  execute_process(COMMAND "${RUBE}" run "${LEVEL}" --script "${script}" --no-render
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0 OR NOT out MATCHES "goal: +reached at step ${step}\n")
+    message(FATAL_ERROR "${script} (goal at step ${step} in the search) replayed with status ${status}:\n${out}${err}")
+  endif()
+endforeach()
+message(STATUS "${count} solutions replayed to their goal steps")

@@ -18,10 +18,14 @@ std::string quoted(const std::filesystem::path& p) { return gnuplotQuoted(p); }
 
 } // namespace
 
-// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string.
+// Built by appending: GCC 12 gives a false -Wrestrict on "'" + std::string. Inside gnuplot's single
+// quotes a quote is written twice ("Box2D's" as 'Box2D''s'), as its manual says.
 std::string gnuplotQuoted(const std::filesystem::path& p) {
     std::string q(1, '\'');
-    q += p.string();
+    for (const char c : p.string()) {
+        q += c;
+        if (c == '\'') q += '\'';
+    }
     q += '\'';
     return q;
 }

@@ -1,4 +1,5 @@
 // levels/index.toml: every shipped level listed once, in a readable order, and the reader's errors.
+#include "level_folder.hpp"
 #include "level_index.hpp"
 
 #include <catch2/catch.hpp>
@@ -33,12 +34,7 @@ TEST_CASE("the level index lists every shipped level exactly once", "[index]") {
     std::set<fs::path> listed;
     for (const IndexedLevel& level : *load.levels) listed.insert(fs::canonical(level.file));
     std::set<fs::path> shipped;
-    for (const fs::directory_entry& entry : fs::directory_iterator(kLevels)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.path().extension() == ".toml" && name != "index.toml" &&
-            name.find(".solution.") == std::string::npos)
-            shipped.insert(fs::canonical(entry.path()));
-    }
+    for (const LevelFile& file : levelFilesIn(kLevels, LevelFileRole::level)) shipped.insert(fs::canonical(file.path));
     CHECK(listed == shipped);
     CHECK(load.levels->size() == listed.size());
 }

@@ -1,6 +1,7 @@
 // Level screenshot tests: each level's first frame and its goal frame, played by its solution
 // script and drawn by LevelView as `rube run --script --out` draws them, compared at 640x360 with
 // screenshots/<level>_<frame>.png. UPDATE_SCREENSHOTS=1 regenerates the goldens (look at each).
+#include "level_folder.hpp"
 #include "level_view.hpp"
 #include "scene_file.hpp"
 #include "scene_framing.hpp"
@@ -71,12 +72,7 @@ void checkLevel(const std::string& name) {
 // Every level with a solution (levels/NAME.solution.toml), sorted: a new level is checked by being there.
 TEST_CASE("every level: first and goal frames", "[screenshot][level]") {
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
-        const std::string file = entry.path().filename().string();
-        if (file.ends_with(".solution.toml"))
-            names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
-    }
-    std::sort(names.begin(), names.end());
+    for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::solution)) names.push_back(file.level);
     REQUIRE(names.size() >= 16);
     for (const std::string& name : names) {
         INFO(name);

@@ -1,5 +1,6 @@
 // Level tests: every level in levels/ is solved by its script and not solved as it stands, the
 // placement rules refuse what they should, and aiming through the game layer hits analytically.
+#include "level_folder.hpp"
 #include "items/part_common.hpp" // a ball's parameters, to start one moving
 #include "level_run.hpp"
 #include "scene_file.hpp"
@@ -15,6 +16,8 @@
 #include <optional>
 #include <numbers>
 #include <filesystem>
+#include <map>
+#include <tuple>
 
 using namespace rube;
 using namespace rube::game;
@@ -24,12 +27,7 @@ namespace {
 // Every level with a solution (levels/NAME.solution.toml), sorted: a new level is tested by being there.
 std::vector<std::string> solvedLevels() {
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
-        const std::string file = entry.path().filename().string();
-        if (file.ends_with(".solution.toml"))
-            names.push_back(file.substr(0, file.size() - std::string(".solution.toml").size()));
-    }
-    std::sort(names.begin(), names.end());
+    for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::solution)) names.push_back(file.level);
     return names;
 }
 
@@ -80,6 +78,45 @@ TEST_CASE("each level's solution reaches the goal, and the level as it stands do
         const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
         CHECK(play(level, *script.script, steps).goalStep().has_value());
         CHECK_FALSE(play(level, ScriptDesc{}, steps).goalStep().has_value());
+    }
+}
+
+// Issue 22: a level is a puzzle only if the plausible wrong ideas fail. Each level ships at least two
+// wrong attempts (NAME.wrong.WORD.toml, level_folder.hpp), each placing or doing something the
+// level allows; none may reach the goal. Another intended solution (NAME.solution.WORD.toml) must
+// reach it, with placements other than the intended solution's.
+TEST_CASE("each level's wrong attempts fail and its other solutions reach the goal", "[level]") {
+    std::map<std::string, int> wrongs;
+    for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::wrong)) {
+        INFO(file.path.filename().string());
+        const SceneDesc level = loadLevel(file.level);
+        const ScriptLoad script = loadScriptFile(file.path, level);
+        INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
+        REQUIRE(script.script);
+        REQUIRE(checkPlacements(level, script.script->placements) == std::nullopt);
+        CHECK((!script.script->placements.empty() || !script.script->actions.empty()));
+        const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
+        CHECK_FALSE(play(level, *script.script, steps).goalStep().has_value());
+        ++wrongs[file.level];
+    }
+    for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::alternative)) {
+        INFO(file.path.filename().string());
+        const SceneDesc level = loadLevel(file.level);
+        const ScriptLoad script = loadScriptFile(file.path, level);
+        INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
+        REQUIRE(script.script);
+        const ScriptLoad intended = loadScriptFile(
+            std::filesystem::path(RUBE_GAME_LEVELS_DIR) / (file.level + ".solution.toml"), level);
+        REQUIRE(intended.script);
+        const auto key = [](const std::vector<Placement>& placements) {
+            std::vector<std::tuple<std::string_view, double, double, double>> parts;
+            for (const Placement& p : placements) parts.emplace_back(p.kind->name(), p.position.x, p.position.y, p.angle);
+            std::sort(parts.begin(), parts.end());
+            return parts;
+        };
+        CHECK(key(script.script->placements) != key(intended.script->placements));
+        const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
+        CHECK(play(level, *script.script, steps).goalStep().has_value());
     }
 }
 

@@ -1,6 +1,7 @@
 // The level writer: every shipped level reads, writes and reads back to the same level (its parts
 // field by field, the writer's own output a fixed point, and its solution replaying to the same
 // goal step and state hash); a level changed in memory, as the editor changes it, is written so.
+#include "level_folder.hpp"
 #include "check_command.hpp"
 #include "level_run.hpp"
 #include "level_writer.hpp"
@@ -93,13 +94,10 @@ void requireSameLevel(const SceneDesc& a, const SceneDesc& b) {
 
 TEST_CASE("every shipped level reads, writes and reads back to the same level", "[level][writer]") {
     int levels = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(kLevels)) {
-        const std::string file = entry.path().filename().string();
-        if (entry.path().extension() != ".toml" || file.find(".solution.") != std::string::npos || file == "index.toml")
-            continue;
-        const std::string name = entry.path().stem().string();
+    for (const LevelFile& file : levelFilesIn(kLevels, LevelFileRole::level)) {
+        const std::string name = file.level;
         INFO(name);
-        const SceneLoad load = loadSceneFile(entry.path());
+        const SceneLoad load = loadSceneFile(file.path);
         REQUIRE(load.ok());
         const SceneDesc& original = *load.scene;
         const std::string written = writeLevel(original, "# " + name + ", written back");

@@ -7,6 +7,7 @@
 // seeds (default 400, each under up to five methods, at most 300 steps: 1,925 runs in 1.5 s); the
 // hidden "[.long]" case plays RUBE_RANDOM_LEVELS_LONG seeds (default 10,000: 48,125 runs, 72 s)
 // for each level's whole time limit.
+#include "level_folder.hpp"
 #include "level_run.hpp"
 #include "method_budget.hpp"
 #include "random_level.hpp"
@@ -43,12 +44,7 @@ int countFromEnvironment(const char* name, int fallback) {
 /// Every shipped level (levels/*.toml, not the solutions), sorted by name so seeds map alike everywhere.
 std::vector<SceneDesc> shippedLevels() {
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(RUBE_GAME_LEVELS_DIR)) {
-        const std::string name = entry.path().filename().string();
-        // levels/index.toml lists the levels; it is not one.
-        if (entry.path().extension() == ".toml" && name.find(".solution.") == std::string::npos && name != "index.toml")
-            files.push_back(entry.path());
-    }
+    for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::level)) files.push_back(file.path);
     std::sort(files.begin(), files.end());
     std::vector<SceneDesc> levels;
     for (const auto& file : files) {

@@ -1,6 +1,7 @@
 // The script writer against the script reader: every shipped solution script, and scripts that use
 // every key the reader knows, read, write and read back to the same script, and writing that
 // again gives the same text (writeScript and parseScript, game/src/script_file.cpp).
+#include "level_folder.hpp"
 #include "scene_file.hpp"
 #include "script_file.hpp"
 
@@ -79,16 +80,14 @@ std::string readText(const std::filesystem::path& file) {
 
 } // namespace
 
-TEST_CASE("every shipped solution script reads, writes and reads back to the same script", "[level][script]") {
+TEST_CASE("every shipped script reads, writes and reads back to the same script", "[level][script]") {
     int solutions = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(kLevels)) {
-        const std::string file = entry.path().filename().string();
-        const std::string suffix = ".solution.toml";
-        if (file.size() <= suffix.size() || file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0)
-            continue;
-        const SceneDesc level = loadLevel(kLevels / (file.substr(0, file.size() - suffix.size()) + ".toml"));
-        checkRoundTrip(readText(entry.path()), file, level);
-        ++solutions;
+    for (const LevelFileRole role : {LevelFileRole::solution, LevelFileRole::alternative, LevelFileRole::wrong}) {
+        for (const LevelFile& file : levelFilesIn(kLevels, role)) {
+            const SceneDesc level = loadLevel(levelOfScript(file));
+            checkRoundTrip(readText(file.path), file.path.filename().string(), level);
+            if (role == LevelFileRole::solution) ++solutions;
+        }
     }
     // Sixteen levels ship, each with its solution; none may be skipped unseen.
     CHECK(solutions >= 16);

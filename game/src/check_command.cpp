@@ -2,6 +2,7 @@
 // warnings of a level (level_lint.hpp) that loads but is likely not what was meant.
 #include "check_command.hpp"
 
+#include "level_folder.hpp"
 #include "level_index.hpp"
 #include "level_lint.hpp"
 #include "scene_file.hpp"
@@ -19,16 +20,12 @@ constexpr std::string_view kScriptSuffix = ".solution.toml";
 // Top-level keys no scene has: any of them makes a file a script.
 constexpr std::string_view kScriptOnlyKeys[] = {"level", "steps", "capture", "place", "action", "expect"};
 
-bool endsWith(std::string_view text, std::string_view suffix) {
-    return text.size() >= suffix.size() && text.substr(text.size() - suffix.size()) == suffix;
-}
-
-// NAME.toml beside NAME.solution.toml; nothing for a script named otherwise.
+// NAME.toml beside NAME.solution.toml, NAME.solution.WORD.toml or NAME.wrong.WORD.toml (level_folder.hpp);
+// nothing for a script named otherwise.
 std::optional<std::filesystem::path> levelBeside(const std::filesystem::path& script) {
-    std::string name = script.filename().string();
-    if (!endsWith(name, kScriptSuffix)) return std::nullopt;
-    name.resize(name.size() - kScriptSuffix.size());
-    return script.parent_path() / (name + ".toml");
+    const std::filesystem::path level = levelOfScript(classifyLevelFile(script));
+    if (level.empty()) return std::nullopt;
+    return level;
 }
 
 std::filesystem::path solutionBeside(const std::filesystem::path& level) {
@@ -45,7 +42,8 @@ bool checkScript(const CheckOptions& options, const std::string& file, std::ostr
     if (options.level.empty() && (!beside || !std::filesystem::exists(*beside))) {
         err << file << ": a script is checked against its level, and "
             << (beside ? beside->string() + " does not exist"
-                       : std::string("it is not named NAME.solution.toml beside NAME.toml"))
+                       : std::string("it is not named NAME.solution.toml, NAME.solution.WORD.toml or "
+                                         "NAME.wrong.WORD.toml beside NAME.toml"))
             << ": name the level with --level LEVEL\n";
         return false;
     }
@@ -108,7 +106,7 @@ bool looksLikeIndex(const std::string& file, const std::string& text) {
 } // namespace
 
 bool looksLikeScript(const std::string& file, const std::string& text) {
-    if (endsWith(file, kScriptSuffix)) return true;
+    if (!levelOfScript(classifyLevelFile(file)).empty()) return true;
     Diagnostics ignored(file);
     const std::optional<toml::table> document = parseToml(text, file, ignored);
     if (!document) return false;

@@ -17,13 +17,13 @@ struct CheckOptions {
 };
 
 /// True when `text`, read from `file`, is a solution script rather than a scene: it is named
-/// *.solution.toml, or its top level holds a key only scripts have (level, steps, [capture],
+/// NAME.solution.toml, NAME.solution.WORD.toml or NAME.wrong.WORD.toml (level_folder.hpp), or its top level holds a key only scripts have (level, steps, [capture],
 /// [[place]], [[action]], [[expect]]).
 bool looksLikeScript(const std::string& file, const std::string& text);
 
 /// Prints `FILE: ok` (or `FILE: ok, N warnings`) to `out` for each good file and every error and
 /// warning to `err`, one line each as `file:line:col: message` (warnings as `file:line:col: warning:
-/// message`). A script is checked against its level: --level, else NAME.toml beside NAME.solution.toml.
+/// message`). A script is checked against its level: --level, else NAME.toml beside the script.
 /// Returns ok when every file is good (and, with strict, has no warning), else badInput.
 ExitCode checkFiles(const CheckOptions& options, std::ostream& out, std::ostream& err);
 

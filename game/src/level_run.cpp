@@ -41,18 +41,76 @@ LevelRun::LevelRun(const SceneDesc& scene, const std::vector<Placement>& placeme
         world_.setUserValue(world_.circleId(static_cast<int>(i)), kSceneMark + i);
     for (const ItemDesc& item : scene.level.items) addItem(item);
     for (const Placement& p : placements) addItem(placedItem(p));
+    addItemJoints();
+}
+
+void LevelRun::addItemJoints() {
+    // A named item's end: its first rigid body, else its first circle (checked by the kind's
+    // checkReferences when the level was read; an item without either is the world).
+    const auto endOf = [&](const ItemHandles& own, const ItemJointEnd& end) -> JointEnd {
+        switch (end.to) {
+        case ItemJointEnd::To::world: return {};
+        case ItemJointEnd::To::circle: return {own.circles.at(static_cast<std::size_t>(end.index)), {}};
+        case ItemJointEnd::To::body: return {{}, own.bodies.at(static_cast<std::size_t>(end.index))};
+        case ItemJointEnd::To::item: {
+            const int other = find(end.item);
+            if (other < 0) return {};
+            const ItemState& state = states_[static_cast<std::size_t>(other)];
+            if (!state.body.isNull()) return {{}, state.body};
+            return {state.circle, {}};
+        }
+        }
+        return {};
+    };
+    // Gears couple joints, which may be another item's: every item's own joints first, then gears.
+    for (const bool gears : {false, true}) {
+        for (std::size_t i = 0; i < pendingJoints_.size(); ++i) {
+            const ItemHandles& own = pendingJoints_[i];
+            ItemState& state = states_[i];
+            if (!gears) state.joints.assign(own.joints.size(), JointId{});
+            for (std::size_t j = 0; j < own.joints.size(); ++j) {
+                const ItemJoint& joint = own.joints[j];
+                if ((joint.def.kind == JointKind::gear) != gears) continue;
+                JointDef def = joint.def;
+                if (gears) {
+                    const auto jointOf = [&](int index, const std::string& item) -> JointId {
+                        if (index >= 0) return state.joints.at(static_cast<std::size_t>(index));
+                        const int other = find(item);
+                        const auto& joints = states_[static_cast<std::size_t>(std::max(other, 0))].joints;
+                        return other < 0 || joints.empty() ? JointId{} : joints.front();
+                    };
+                    def.jointA = jointOf(joint.gearA, joint.gearItemA);
+                    def.jointB = jointOf(joint.gearB, joint.gearItemB);
+                    if (def.jointA.isNull() || def.jointB.isNull()) continue;
+                } else {
+                    def.a = endOf(own, joint.a);
+                    def.b = endOf(own, joint.b);
+                }
+                state.joints[j] = world_.addJoint(def);
+            }
+        }
+    }
+    pendingJoints_.clear();
 }
 
 void LevelRun::addItem(const ItemDesc& item) {
     ItemState state;
     state.aim = item.angle;
     const ItemBodies bodies = itemBodies(item);
+    ItemHandles handles;
     for (CircleDef c : bodies.circles) {
         c.userValue = items_.size() + 1;
         const CircleId circle = world_.addCircle(c);
         if (state.circle.isNull()) state.circle = circle;
+        handles.circles.push_back(circle);
     }
     for (const SegmentDef& s : bodies.segments) world_.addSegment(s);
+    for (RigidBodyDef b : bodies.rigidBodies) {
+        b.userValue = items_.size() + 1;
+        handles.bodies.push_back(world_.addBody(b));
+        if (state.body.isNull()) state.body = handles.bodies.back();
+    }
+    handles.joints = bodies.joints;
     Fields& fields = world_.fields();
     if (bodies.magnet) {
         state.field = static_cast<int>(fields.magnets.size());
@@ -69,6 +127,7 @@ void LevelRun::addItem(const ItemDesc& item) {
     }
     items_.push_back(item);
     states_.push_back(state);
+    pendingJoints_.push_back(std::move(handles));
 }
 
 int LevelRun::find(std::string_view name) const {
@@ -95,6 +154,7 @@ std::string LevelRun::nameOf(CircleId circle) const {
 Vec2 LevelRun::itemPosition(int item) const {
     const ItemState& state = states_[static_cast<std::size_t>(item)];
     if (!state.circle.isNull()) return world_.circle(state.circle).position;
+    if (!state.body.isNull()) return world_.body(state.body).position;
     return items_[static_cast<std::size_t>(item)].position;
 }
 
@@ -106,6 +166,7 @@ Vec2 LevelRun::itemVelocity(int item) const {
     }
     const ItemState& state = states_[static_cast<std::size_t>(item)];
     if (!state.circle.isNull()) return world_.circle(state.circle).velocity;
+    if (!state.body.isNull()) return world_.body(state.body).velocity;
     return {};
 }
 

@@ -33,6 +33,8 @@ struct GameEvent {
 /// Which of the World's bodies is an item's, and what has happened to it.
 struct ItemState {
     CircleId circle;    ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
+    BodyId body;        ///< its first rigid body in the World: null when it has none
+    std::vector<JointId> joints; ///< its joints (ItemBodies::joints), in order, once every item is in the World
     double aim = 0.0;   ///< cannons: the barrel's angle now, radians
     bool hit = false;   ///< targets and switches: touched by a ball
     bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed)
@@ -120,6 +122,8 @@ public:
 
 private:
     void addItem(const ItemDesc& item);
+    /// Adds every item's joints (ItemBodies::joints), once all items are in the World.
+    void addItemJoints();
     void checkGoal();
     CircleId ballRestingIn(const ItemDesc& bucket) const;
     bool pastTimeLimit(double limit) const { return world_.time() > limit + 1e-9; }
@@ -128,6 +132,13 @@ private:
     World world_;
     std::vector<ItemDesc> items_;
     std::vector<ItemState> states_;
+    /// Each item's own bodies in the World, in ItemBodies order, until its joints are added.
+    struct ItemHandles {
+        std::vector<CircleId> circles;
+        std::vector<BodyId> bodies;
+        std::vector<ItemJoint> joints;
+    };
+    std::vector<ItemHandles> pendingJoints_;
     std::vector<RopeId> ropes_; // the scene's [[rope]] i (SceneDesc::ropes) -> its rope in the World
     std::vector<GameEvent> events_;
     std::optional<std::int64_t> goalStep_;

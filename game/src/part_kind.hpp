@@ -7,6 +7,8 @@
 
 #include "scene_errors.hpp"
 
+#include "rube/physics/joint.hpp"
+#include "rube/physics/rigid_body.hpp"
 #include "rube/physics/world.hpp"
 
 #include <any>
@@ -73,10 +75,35 @@ struct ItemDesc {
                                         ///< reader's order, for the level writer
 };
 
-/// The physics bodies one item adds (circles and segments, in order) and the field it brings.
+/// One end of an item's joint: the world, one of the item's own bodies, or another item of the
+/// level by its name (that item's first rigid body, else its first circle). Named items are found
+/// once every item has joined the World, so an item may name one placed or listed after it.
+struct ItemJointEnd {
+    /// What the end is.
+    enum class To : std::uint8_t { world, circle, body, item };
+    To to = To::world;
+    int index = 0;    ///< circle, body: its index in the item's ItemBodies::circles or rigidBodies
+    std::string item; ///< item: the other item's name
+};
+
+/// A joint an item adds (a motor's axle, a hammer's pivot, a belt between two wheels). The def's
+/// anchors, axis and the like are filled by the kind; its ends and its gear's joints by the run.
+struct ItemJoint {
+    JointDef def;      ///< ends (a, b) and jointA, jointB are set when the item joins a World
+    ItemJointEnd a, b; ///< every kind but gear
+    /// gear: the two joints it couples, each an index into this item's joints, or (index -1) the
+    /// first joint of the item named in gearItemA / gearItemB (a belt between two wheels).
+    int gearA = -1, gearB = -1;
+    std::string gearItemA, gearItemB;
+};
+
+/// The physics bodies one item adds (circles, segments and rigid bodies, each in order), the joints
+/// between them, and the field it brings.
 struct ItemBodies {
-    std::vector<CircleDef> circles;   ///< in order
-    std::vector<SegmentDef> segments; ///< in order
+    std::vector<CircleDef> circles;        ///< in order
+    std::vector<SegmentDef> segments;      ///< in order
+    std::vector<RigidBodyDef> rigidBodies; ///< boxes and capsules (crates, dominoes, a hammer's head), in order
+    std::vector<ItemJoint> joints;         ///< in order, added once every item is in the World
     std::optional<Magnet> magnet;     ///< a magnet's pull
     std::optional<Wind> wind;         ///< a fan's air column
     std::optional<Thruster> thruster; ///< a rocket's thruster (its circle index is set when it joins a World)

@@ -77,6 +77,17 @@ Aabb PartKind::extent(const ItemDesc& item) const {
     };
     for (const CircleDef& c : shapes.circles)
         grow(c.position - Vec2{c.radius, c.radius}, c.position + Vec2{c.radius, c.radius});
+    for (const RigidBodyDef& b : shapes.rigidBodies) {
+        // A turned box's or capsule's bounds: its half-extents through the rotation, plus a
+        // capsule's radius all round.
+        const double c = std::abs(std::cos(b.angle)), s = std::abs(std::sin(b.angle));
+        const bool capsule = b.shape == BodyShape::capsule;
+        const double hx = b.halfExtents.x;
+        const double hy = capsule ? 0.0 : b.halfExtents.y;
+        const double pad = capsule ? b.halfExtents.y : 0.0;
+        const Vec2 half{c * hx + s * hy + pad, s * hx + c * hy + pad};
+        grow(b.position - half, b.position + half);
+    }
     for (const SegmentDef& s : shapes.segments) {
         const Vec2 pad{s.radius, s.radius};
         grow(Vec2{std::min(s.a.x, s.b.x), std::min(s.a.y, s.b.y)} - pad,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rube::game {
 
@@ -35,9 +36,23 @@ double segmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 bool overlaps(const Capsule& p, const Capsule& q) { return segmentDistance(p.a, p.b, q.a, q.b) < p.radius + q.radius; }
 
+// A rigid body's room as one capsule that holds it whole: a capsule as it is; a box as the capsule
+// from end to end of its longer axis with its shorter half-extent as radius, which is the box along
+// its long sides and covers its corners with the caps (a placement is refused a little early at
+// the ends rather than let the box overlap).
+Capsule roomOf(const RigidBodyDef& b, const std::string& what, const std::string& brief) {
+    const bool wide = b.shape == BodyShape::capsule || b.halfExtents.x >= b.halfExtents.y;
+    const double half = wide ? b.halfExtents.x : b.halfExtents.y;
+    const double radius = wide ? b.halfExtents.y : b.halfExtents.x;
+    const double axisAngle = wide ? b.angle : b.angle + 0.5 * std::numbers::pi;
+    const Vec2 axis{std::cos(axisAngle), std::sin(axisAngle)};
+    return {b.position - axis * half, b.position + axis * half, radius, what, brief};
+}
+
 void addBodies(const ItemBodies& bodies, const std::string& what, const std::string& brief, std::vector<Capsule>& out) {
     for (const CircleDef& c : bodies.circles) out.push_back({c.position, c.position, c.radius, what, brief});
     for (const SegmentDef& s : bodies.segments) out.push_back({s.a, s.b, s.radius, what, brief});
+    for (const RigidBodyDef& b : bodies.rigidBodies) out.push_back(roomOf(b, what, brief));
 }
 
 // A pair rounded to centimetres, for the bar: [0.65, 3.45], not [0.650961894323342, 3.45].

@@ -99,7 +99,13 @@ TEST_CASE("each level's wrong attempts fail and its other solutions reach the go
         CHECK_FALSE(play(level, *script.script, steps).goalStep().has_value());
         ++wrongs[file.level];
     }
+    for (const std::string& name : solvedLevels()) {
+        INFO(name << " has " << wrongs[name] << " wrong attempts (NAME.wrong.WORD.toml); it needs two");
+        CHECK(wrongs[name] >= 2);
+    }
+    int alternatives = 0;
     for (const LevelFile& file : levelFilesIn(RUBE_GAME_LEVELS_DIR, LevelFileRole::alternative)) {
+        ++alternatives;
         INFO(file.path.filename().string());
         const SceneDesc level = loadLevel(file.level);
         const ScriptLoad script = loadScriptFile(file.path, level);
@@ -118,6 +124,7 @@ TEST_CASE("each level's wrong attempts fail and its other solutions reach the go
         const auto steps = static_cast<std::int64_t>(*level.level.goal->timeLimit / level.world.timeStep);
         CHECK(play(level, *script.script, steps).goalStep().has_value());
     }
+    CHECK(alternatives >= 1);
 }
 
 // Issue 23: the goal event says where the goal happened and what did it. For a target goal, the hit

@@ -297,17 +297,19 @@ rube_cli_test("items --sheet into a file is refused" "items|--sheet|${RUBE_CLI_D
 rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
               "-DSTDERR_LINE=rube: --size requires --sheet (see 'rube items --help')")
 
-# Check and lint (issue 23). Every shipped level, with its solution script, passes `rube check
-# --strict`: no warning (the lint runs the level headless with nothing placed and with its
-# solution), and the script reads against its level.
+# Check and lint (issue 23). Every shipped level, with its scripts (its solution, other solutions
+# and wrong attempts: game/src/level_folder.hpp), passes `rube check --strict`: no warning (the lint
+# runs the level headless with nothing placed and with its solution), and each script reads
+# against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
-list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+list(FILTER shipped_levels EXCLUDE REGEX "/[^/]*\\.[^/]*\\.toml$") # scripts: NAME.solution.toml, NAME.wrong.WORD.toml, ...
 list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the list of levels, not a level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)
-  set(solution ${PROJECT_SOURCE_DIR}/levels/${stem}.solution.toml)
-  rube_cli_test("check --strict level ${stem}" "check|--strict|${level}|${solution}" 0 -DSTDERR_EMPTY=ON
-                "-DSTDOUT_MATCH=^[^\n]*${stem}.toml: ok\n[^\n]*${stem}.solution.toml: ok \\(a script for [^\n]*${stem}.toml\\)\n$")
+  file(GLOB scripts ${PROJECT_SOURCE_DIR}/levels/${stem}.*.toml)
+  list(JOIN scripts "|" scripts)
+  rube_cli_test("check --strict level ${stem}" "check|--strict|${level}|${scripts}" 0 -DSTDERR_EMPTY=ON
+                "-DSTDOUT_MATCH=^[^\n]*${stem}.toml: ok\n([^\n]*${stem}[.][a-z.-]+[.]toml: ok \\(a script for [^\n]*${stem}.toml\\)\n)+$")
 endforeach()
 # The level index is recognised and checked as one (every file it lists exists, no level twice).
 rube_cli_test("check the level index" "check|${PROJECT_SOURCE_DIR}/levels/index.toml" 0 -DSTDERR_EMPTY=ON
@@ -330,7 +332,7 @@ foreach(stem zones-typo switch-empty switch-target)
   rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
-              "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml beside NAME.toml: name the level with --level LEVEL")
+              "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml, NAME.solution.WORD.toml or NAME.wrong.WORD.toml beside NAME.toml: name the level with --level LEVEL")
 rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT_MATCH=--level LEVEL.*--strict")
 # A level without a [goal] has nothing to miss: `rube run` says so and exits 0.
 rube_cli_test("run a level without a goal" "run|${lint}/warnings.toml|--no-render|--steps|20" 0

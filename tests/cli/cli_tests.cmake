@@ -332,7 +332,7 @@ foreach(stem zones-typo switch-empty switch-target)
   rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
-              "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml beside NAME.toml: name the level with --level LEVEL")
+              "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml, NAME.solution.WORD.toml or NAME.wrong.WORD.toml beside NAME.toml: name the level with --level LEVEL")
 rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT_MATCH=--level LEVEL.*--strict")
 # A level without a [goal] has nothing to miss: `rube run` says so and exits 0.
 rube_cli_test("run a level without a goal" "run|${lint}/warnings.toml|--no-render|--steps|20" 0

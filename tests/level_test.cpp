@@ -217,9 +217,13 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
           "t.toml:8:12: strength must be greater than 0 and at most 10000, got -2");
     CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
+    // Every placeable kind, in the catalogue's order: today's first, any later placeable kind after them.
+    std::string placeable;
+    for (ItemKind kind : allPartKinds())
+        if (kind->placeable()) placeable += (placeable.empty() ? "" : ", ") + std::string(kind->name());
+    CHECK(placeable.starts_with("heavy, bouncy, steel, balloon, plank, ramp, bumper, bomb, magnet, fan, rocket"));
     CHECK(firstError(floor + "[inventory]\ncannon = 1\n") ==
-          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: heavy, bouncy, steel, "
-          "balloon, plank, ramp, bumper, bomb, magnet, fan, rocket)");
+          "t.toml:6:1: unknown key 'cannon' in [inventory] (placeable kinds) (known keys: " + placeable + ")");
     CHECK(firstError(floor + "[[circle]]\nname = \"a\"\nposition = [0, 1]\nradius = 0.2\n[[item]]\nkind = "
                              "\"heavy\"\nname = \"a\"\nposition = [2, 1]\n") ==
           "t.toml:11:8: the name 'a' is already used at line 6");

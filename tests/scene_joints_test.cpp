@@ -100,3 +100,20 @@ TEST_CASE("scene joints: a method that cannot move joints is refused at its name
     CHECK(errorOf(text) ==
           "s.toml:3:10: method 'exact' cannot move turning boxes, capsules, pivots or joints: use 'auto' or 'solver'");
 }
+
+TEST_CASE("scene joints: collide_connected is read for every kind with two ends, false by default",
+          "[scene][joints][collide]") {
+    const SceneDesc scene = sceneOf(with("[[joint]]\nkind = \"weld\"\na = \"left\"\nb = \"right\"\n"
+                                         "[[joint]]\nkind = \"spring\"\na = \"left\"\nb = \"crate\"\nstiffness = 5\n"
+                                         "collide_connected = true\n"));
+    REQUIRE(scene.joints.size() == 2);
+    CHECK_FALSE(scene.joints[0].def.collideConnected);
+    CHECK(scene.joints[1].def.collideConnected);
+    World world = buildWorld(scene);
+    CHECK(world.joints()[1].def.collideConnected);
+    CHECK(errorOf(with("[[joint]]\nkind = \"weld\"\na = \"left\"\nb = \"right\"\ncollide_connected = 1\n")) ==
+          "s.toml:21:21: collide_connected must be true or false, got integer");
+    CHECK(errorOf(with("[[joint]]\nkind = \"weld\"\na = \"left\"\nb = \"right\"\ncollide_conected = true\n")) ==
+          "s.toml:21:1: unknown key 'collide_conected' in [[joint]] of kind 'weld' (did you mean "
+          "'collide_connected'?)");
+}

@@ -386,3 +386,36 @@ TEST_CASE("exact spring: auto puts a spring-to-fixed-point island on exact, bit 
     CHECK(automatic.world.stats().exactBodySteps == 300);
     CHECK(automatic.world.stats().solverBodySteps == 600);
 }
+
+TEST_CASE("exact spring: a ball its spring pulls into the floor comes to rest on it, never through it",
+          "[exact][joints][spring]") {
+    // x_eq lies below the floor: the ball lands, bounces less each time (bounciness 0.5) and rests,
+    // its resting contacts settled at each step's end as any resting ball's are.
+    for (const double k : {30.0, 300.0})
+        for (const double restLength : {0.0, 2.0}) {
+            // The fixed point below the floor: the spring pulls the ball down onto it.
+            SpringCase s;
+            s.k = k;
+            s.restLength = restLength;
+            s.gravity = {0.0, -9.81};
+            s.anchor = {0.0, -0.2 - restLength};
+            s.position = {0.0, 0.3};
+            SpringWorld w = makeSpring(s);
+            SegmentDef ground;
+            ground.a = {-3.0, 0.0};
+            ground.b = {3.0, 0.0};
+            ground.material.bounciness = 0.5;
+            w.world.addSegment(ground);
+            REQUIRE(equilibrium(s).y < 0.0);
+            double lowest = s.position.y;
+            for (int n = 0; n < 600; ++n) {
+                w.world.step();
+                lowest = std::min(lowest, w.world.circle(w.ball).position.y);
+            }
+            const Circle& c = w.world.circle(w.ball);
+            INFO("k " << k << " L0 " << restLength << ": lowest " << lowest << ", speed " << c.velocity.length());
+            CHECK(lowest > 0.1 - 1e-3); // the radius, less the resting slop of a step
+            CHECK(c.position.x == 0.0);
+            CHECK(c.velocity.length() < 0.05);
+        }
+}

@@ -86,8 +86,8 @@ double springSpeedBound(const SpringPath& path, Vec2 position, Vec2 velocity) {
 std::string exactSpringRefusal(const Joint& j, std::span<const Circle> circles, Vec2 gravity, bool withBlocks) {
     const JointDef& d = j.def;
     if (d.kind != JointKind::spring)
-        return std::string("a ") + kindName(d.kind) +
-               " joint couples bodies: the exact method has a closed form only for a spring to a fixed point";
+        return std::string("the exact method follows only springs to fixed points, not a ") + kindName(d.kind) +
+               " joint";
     if (j.bodyA >= 0 || j.bodyB >= 0)
         return "a spring on a box or capsule: the exact method follows springs on circles only";
     if (!d.a.isWorld() && !d.b.isWorld()) return "a spring between two bodies couples them: it has no closed form";

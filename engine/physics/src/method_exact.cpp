@@ -74,6 +74,7 @@ class ExactMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
         circleCount_ = static_cast<int>(ctx.circles.size());
+        dt_ = dt;
         // Memory O(n + resting pairs): a table of every pair's state was n x (n + segments) bytes,
         // 10 GB for 100,000 circles, and clearing it cost O(n^2) every step.
         restingOf_.resize(ctx.circles.size());
@@ -213,6 +214,25 @@ private:
             }
         }
         return best;
+    }
+
+    // The settle's resting threshold for a pair: the world's (2 |g| dt + 1e-3 unless set), or as much
+    // for the acceleration a spring gives a circle of the pair, |omega^2 (p - x_eq) + 2 zeta omega v|,
+    // which may be far above g: a spring-held ball resting on the floor (its pair left out of the
+    // search) sinks |a| dt^2 / 2 within the step and must be settled at rest, not bounced off with the
+    // speed the spring gave it. Impacts within the step keep the world's: they are real approaches.
+    double restingSpeedOf(const StepContext& ctx, int i, int j) const {
+        if (springs_.empty()) return ctx.restingSpeed;
+        double speed = ctx.restingSpeed;
+        for (const int k : {i, j}) {
+            const SpringPath* path = k >= 0 ? springs_.pathOf(k) : nullptr;
+            if (!path) continue;
+            const Circle& c = ctx.circles[static_cast<std::size_t>(k)];
+            const Vec2 a = (c.position - path->equilibrium) * (path->omega * path->omega) +
+                           c.velocity * (2.0 * path->zeta * path->omega);
+            speed = std::max(speed, 2.0 * a.length() * dt_ + 1e-3);
+        }
+        return speed;
     }
 
     // Circle i's motion from now: a spring's closed form, its parabola, or a straight line.
@@ -474,7 +494,8 @@ private:
             bounciness = pairBounciness(c.material, s.material);
         }
         if (!overlap) return 0.0;
-        const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) < ctx.restingSpeed;
+        const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) <
+                               restingSpeedOf(ctx, contact.circle, dynamicOther ? contact.other : -1);
         if (dynamicOther && isResting) {
             // The body holding the other up, nearer the ground, holds still as if of infinite mass.
             const int levelC = levels_[contact.circle], levelO = levels_[contact.other];
@@ -492,6 +513,7 @@ private:
     }
 
     int circleCount_ = 0;
+    double dt_ = 0.0;                                 ///< the step's length (spring-held circles' resting threshold)
     std::vector<std::vector<RestingPair>> restingOf_; ///< per circle: the pairs it rests in for the rest of the step
     std::vector<Contact> contacts_;                   ///< the end-of-step settle's pairs
     std::vector<int> levels_;                         ///< per circle: contacts between it and the ground

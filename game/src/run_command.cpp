@@ -158,10 +158,13 @@ ExitCode runScene(const RunOptions& options, std::ostream& out, std::ostream& er
             << " is a physics scene: it has no items or placement zones\n";
         return ExitCode::badInput;
     }
-    if (method && !movesTurningBodies(*method) && needsRotatingSolver(scene)) {
-        err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules "
-            << (scene.joints.empty() ? "or pivots" : "pivots or joints") << " of " << options.scene
-            << ": use auto or solver\n";
+    if (std::string why; method && !methodMovesRotating(scene, *method, why)) {
+        if (!why.empty())
+            err << "rube run: --method " << options.method << ": " << options.scene << ": " << why << '\n';
+        else
+            err << "rube run: --method " << options.method << " cannot move the turning boxes, capsules "
+                << (scene.joints.empty() ? "or pivots" : "pivots or joints") << " of " << options.scene
+                << ": use auto or solver\n";
         return ExitCode::badInput;
     }
     if (const std::string why = methodBudgetRefusal(scene, method.value_or(scene.world.method)); !why.empty()) {

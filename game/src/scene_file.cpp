@@ -256,13 +256,20 @@ SceneLoad parseScene(std::string_view text, const std::string& fileName) {
     const toml::table* world = document["world"].as_table();
     const bool namesMethod = world && world->contains("method");
     const bool rotating = needsRotatingSolver(scene);
-    if (rotating && namesMethod && !movesTurningBodies(scene.world.method)) {
+    std::string why;
+    // A scene with other errors is not built to ask exact about its springs: only the method's kind counts.
+    if (rotating && namesMethod &&
+        (diag.empty() ? !methodMovesRotating(scene, scene.world.method, why)
+                      : !movesTurningBodies(scene.world.method) &&
+                            !(scene.world.method == Method::exact && scene.pivots.empty() && scene.bodies.empty()))) {
         TableReader worldTable(*world, "in [world]", kWorldKeys, diag);
         worldTable.error(worldTable.valuePlace("method"),
-                         "method '" + std::string(methodName(scene.world.method)) +
-                             (scene.joints.empty() ? "' cannot move turning boxes, capsules or pivots"
-                                                   : "' cannot move turning boxes, capsules, pivots or joints") +
-                             ": use 'auto' or 'solver'");
+                         !why.empty()
+                             ? why
+                             : "method '" + std::string(methodName(scene.world.method)) +
+                                   (scene.joints.empty() ? "' cannot move turning boxes, capsules or pivots"
+                                                         : "' cannot move turning boxes, capsules, pivots or joints") +
+                                   ": use 'auto' or 'solver'");
     }
     // Naming a method too slow for the scene's size is an error at the name (method_budget.hpp).
     if (const std::string why = namesMethod ? methodBudgetRefusal(scene, scene.world.method) : "";

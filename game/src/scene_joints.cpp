@@ -20,14 +20,14 @@ constexpr std::string_view kKindNames[] = {"revolute", "prismatic", "weld", "spr
 enum Kind : std::size_t { revolute, prismatic, weld, spring, pulley, gear, belt };
 
 constexpr std::string_view kRevoluteKeys[] = {
-    "kind", "a", "b", "anchor", "motor_speed", "max_torque", "lower_degrees", "upper_degrees"};
+    "kind", "a", "b", "anchor", "motor_speed", "max_torque", "lower_degrees", "upper_degrees", "collide_connected"};
 constexpr std::string_view kPrismaticKeys[] = {"kind",        "a",         "b",     "anchor", "axis",
-                                               "motor_speed", "max_force", "lower", "upper"};
-constexpr std::string_view kWeldKeys[] = {"kind", "a", "b", "anchor", "hertz", "damping_ratio"};
+                                               "motor_speed", "max_force", "lower", "upper",  "collide_connected"};
+constexpr std::string_view kWeldKeys[] = {"kind", "a", "b", "anchor", "hertz", "damping_ratio", "collide_connected"};
 constexpr std::string_view kSpringKeys[] = {"kind",        "a",         "b",       "anchor_a", "anchor_b",
-                                            "rest_length", "stiffness", "damping", "side"};
+                                            "rest_length", "stiffness", "damping", "side",     "collide_connected"};
 constexpr std::string_view kPulleyKeys[] = {"kind",     "a",        "b",     "anchor_a", "anchor_b",
-                                            "ground_a", "ground_b", "ratio", "length"};
+                                            "ground_a", "ground_b", "ratio", "length",   "collide_connected"};
 constexpr std::string_view kGearKeys[] = {"kind", "joint_a", "joint_b", "ratio"};
 constexpr std::string_view kBeltKeys[] = {"kind", "joint_a", "joint_b", "radius_a", "radius_b"};
 constexpr std::array<std::span<const std::string_view>, 7> kKeysOf = {
@@ -229,6 +229,8 @@ void readJoint(const toml::table& table, SceneReading& reading) {
             out.anchorB = joint.vec2("anchor_b", NumberRange::coordinate()).value_or(centreB);
         }
         JointDef& d = out.def;
+        // Whether the two bodies still collide with each other (by default they do not).
+        d.collideConnected = joint.boolean("collide_connected").value_or(false);
         switch (kind) {
         case revolute: {
             const auto motor = readMotor(joint, "max_torque");

@@ -34,6 +34,12 @@ void readRigidBodies(TableReader& root, SceneReading& reading);
 void readJoints(TableReader& root, SceneReading& reading);
 /// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints.
 bool needsRotatingSolver(const SceneDesc& scene);
+/// Why `method` cannot move what needsRotatingSolver found, or empty when it can: solver and auto
+/// move it all; exact a scene whose only such things are springs to fixed points with a closed
+/// form (the world is built and asked, World's requireJointMethod); discrete and turn-based nothing.
+/// A refusal for joints alone is requireJointMethod's message; otherwise empty is returned for
+/// "cannot" too, and the caller says what its own message says.
+bool methodMovesRotating(const SceneDesc& scene, Method method, std::string& why);
 
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.
 void readLevel(TableReader& root, SceneReading& reading);

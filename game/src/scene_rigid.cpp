@@ -4,8 +4,11 @@
 #include "scene_errors.hpp"
 #include "scene_reading.hpp"
 
+#include "scene.hpp"
+
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -134,6 +137,21 @@ void readRigidBodies(TableReader& root, SceneReading& reading) {
     for (const toml::table* table : root.arrayOfTables("box")) readRigidBody(*table, reading, BodyShape::box);
     for (const toml::table* table : root.arrayOfTables("capsule")) readRigidBody(*table, reading, BodyShape::capsule);
     for (const toml::table* table : root.arrayOfTables("pivot")) readPivot(*table, reading);
+}
+
+bool methodMovesRotating(const SceneDesc& scene, Method method, std::string& why) {
+    why.clear();
+    if (movesTurningBodies(method) || !needsRotatingSolver(scene)) return true;
+    if (method != Method::exact || !scene.pivots.empty() || !scene.bodies.empty()) return false;
+    // Joints alone: exact follows a spring to a fixed point on its closed form, where it has one.
+    try {
+        const World world = buildWorld(scene);
+        requireJointMethod(method, world.joints(), world.circles(), world.def().gravity, false);
+        return true;
+    } catch (const std::logic_error& e) {
+        why = e.what();
+        return false;
+    }
 }
 
 bool needsRotatingSolver(const SceneDesc& scene) {

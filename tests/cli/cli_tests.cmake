@@ -86,6 +86,8 @@ rube_cli_test("run bad scene leaves no trace" "run|${RUBE_CLI_DIR}/bad-unknown-k
               -DSTDERR_FIXTURE=${RUBE_CLI_DIR}/bad-unknown-key.toml -DTRACE=${RUBE_CLI_OUT}/bad.csv -DNO_TRACE=ON)
 rube_cli_test("run a method that cannot turn bodies" "run|${RUBE_LEVELS}/seesaw-domino.toml|--no-render|--method|exact" 2
               "-DSTDERR_LINE=rube run: --method exact cannot move the turning boxes, capsules or pivots of ${RUBE_LEVELS}/seesaw-domino.toml: use auto or solver")
+rube_cli_test("run exact refuses a joint without a closed form" "run|${RUBE_CLI_DIR}/exact-hinge.toml|--no-render|--method|exact" 2
+              "-DSTDERR_LINE=rube run: --method exact: ${RUBE_CLI_DIR}/exact-hinge.toml: method 'exact' cannot move joints (joint 0: the exact method follows only springs to fixed points, not a revolute joint): use method 'auto' or 'solver'")
 rube_cli_test("run unknown method leaves no trace" "run|${RUBE_LEVELS}/bounce.toml|--no-render|--method|exat|--trace|${RUBE_CLI_OUT}/method.csv" 2
               "-DSTDERR_LINE=rube run: unknown method 'exat' (valid methods: discrete, turn-based, exact, solver, auto)"
               -DTRACE=${RUBE_CLI_OUT}/method.csv -DNO_TRACE=ON)

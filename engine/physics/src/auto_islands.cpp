@@ -3,6 +3,8 @@
 // the solver's own broadphase does, not a million box tests.
 #include "auto_islands.hpp"
 
+#include "exact_springs.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -100,6 +102,19 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
     for (int i = 0; i < nodeCount; ++i)
         parent_[static_cast<std::size_t>(i)] = looseParent_[static_cast<std::size_t>(i)] = i;
 
+    // A circle on a spring to a fixed point with a closed form is exact's (exact_springs.hpp); its
+    // reach is a disc of its speed bound (the parabola box does not hold a spring's path). Two
+    // springs on one circle are the solver's.
+    springReach_.assign(static_cast<std::size_t>(circleCount), -1.0);
+    for (const Joint& j : ctx.joints) {
+        const int i = springCircle(j);
+        if (i < 0 || i >= circleCount || !exactSpringRefusal(j, ctx.circles, g, !ctx.bodies.empty()).empty()) continue;
+        const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
+        if (c.motion != Motion::dynamic || c.inverseMass <= 0.0) continue;
+        double& reach = springReach_[static_cast<std::size_t>(i)];
+        reach = reach >= 0.0 ? std::numeric_limits<double>::infinity()
+                             : springSpeedBound(springPathOf(j, c, g), c.position, c.velocity) * dt;
+    }
     for (int i = 0; i < circleCount; ++i) {
         const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
         if (c.motion != Motion::dynamic) {
@@ -110,7 +125,11 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         const auto n = static_cast<std::size_t>(i);
         isNode_[n] = 1;
         friction_[n] = c.material.friction > 0.0;
-        boxes_[n] = fattened(parabolaBox(c.position, c.velocity, g, dt), c.radius + c.velocity.length() * dt + slop);
+        const double spring = springReach_[n];
+        boxes_[n] = spring >= 0.0 && std::isfinite(spring)
+                        ? fattened(BoundingBox{c.position, c.position}, c.radius + 2.0 * spring + slop)
+                        : fattened(parabolaBox(c.position, c.velocity, g, dt),
+                                   c.radius + c.velocity.length() * dt + slop);
         sizes_[n] = c.radius;
         order_.push_back(i);
     }
@@ -194,11 +213,17 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         if (c.motion == Motion::dynamic && c.sleep.asleep && dynamicCircle(c.sleep.island)) joinBoth(i, c.sleep.island);
     }
     // Joints are the solver's: a jointed body needs it, and a joint's two ends share an island (a
-    // gear's and a belt's wheels are tied through their revolutes' ends).
+    // gear's and a belt's wheels are tied through their revolutes' ends). Only a spring to a fixed
+    // point with a closed form is exact's (its reach above).
     const auto jointNode = [&](int circle, int body) {
         return body >= 0 ? circleCount + body : dynamicCircle(circle) ? circle : -1;
     };
     for (const Joint& j : ctx.joints) {
+        const int held = springCircle(j);
+        if (held >= 0 && held < circleCount && j.bodyA < 0 && j.bodyB < 0 &&
+            std::isfinite(springReach_[static_cast<std::size_t>(held)]) &&
+            springReach_[static_cast<std::size_t>(held)] >= 0.0)
+            continue;
         const int a = jointNode(j.circleA, j.bodyA), b = jointNode(j.circleB, j.bodyB);
         if (a >= 0) needs_[static_cast<std::size_t>(a)] = 1;
         if (b >= 0) needs_[static_cast<std::size_t>(b)] = 1;

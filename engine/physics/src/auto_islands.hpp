@@ -57,6 +57,7 @@ private:
     std::vector<std::uint8_t> isNode_;
     std::vector<std::uint8_t> friction_;  // per node: a dynamic circle with friction
     std::vector<std::uint8_t> needs_;     // per node: needs the solver by itself
+    std::vector<double> springReach_;     // per circle: how far its exact spring may carry it this step, or -1
     std::vector<int> order_;              // the nodes, in index order (the grid's items)
     std::vector<BoundingBox> looseBoxes_; // per grid item: its neighbourhood box
     std::vector<std::uint8_t> looks_;     // per grid item: it looks for pairs (asleep circles do not)

@@ -33,6 +33,28 @@ void StepSubset::gather(const StepContext& world, std::span<const std::uint8_t> 
         copy.body = bodyInverse_[static_cast<std::size_t>(p.body)];
         pivots_.push_back(copy);
     }
+    // A joint whose bodies are all copied, its ends given the copies' slots (a gear's coupled joints
+    // are not followed: gears are the solver's).
+    joints_.clear();
+    const auto copied = [](const std::vector<int>& inverse, int slot) {
+        return slot < 0 ||
+               (static_cast<std::size_t>(slot) < inverse.size() && inverse[static_cast<std::size_t>(slot)] >= 0);
+    };
+    for (const Joint& j : world.joints) {
+        if (j.def.kind == JointKind::gear) continue;
+        if (!copied(circleInverse_, j.circleA) || !copied(circleInverse_, j.circleB) ||
+            !copied(bodyInverse_, j.bodyA) || !copied(bodyInverse_, j.bodyB))
+            continue;
+        Joint copy = j;
+        const auto to = [](const std::vector<int>& inverse, int slot) {
+            return slot < 0 ? -1 : inverse[static_cast<std::size_t>(slot)];
+        };
+        copy.circleA = to(circleInverse_, j.circleA);
+        copy.circleB = to(circleInverse_, j.circleB);
+        copy.bodyA = to(bodyInverse_, j.bodyA);
+        copy.bodyB = to(bodyInverse_, j.bodyB);
+        joints_.push_back(copy);
+    }
     // An asleep circle names its island by one member's index: the copy's index of that member
     // (islands keep a sleeping island whole, so the member is copied too).
     for (std::size_t k = 0; k < circles_.size(); ++k) {
@@ -48,6 +70,7 @@ StepContext StepSubset::context(const StepContext& world, const WorldDef& def) {
     StepContext sub{def,           circles_,    world.segments, bodies_,    world.time, world.restingSpeed,
                     world.impacts, world.stats, pivots_,        world.ropes};
     sub.sleep = world.sleep;
+    sub.joints = joints_;
     return sub;
 }
 

@@ -17,7 +17,7 @@ namespace rube {
 class StepSubset {
 public:
     /// Copies out dynamic circle i when chosen[i], rigid body b when chosen[circles + b], every
-    /// non-dynamic circle, and the pivots of the chosen bodies.
+    /// non-dynamic circle, and the pivots and joints of the chosen bodies (a joint's ends share an island).
     void gather(const StepContext& world, std::span<const std::uint8_t> chosen);
     /// A context over the copies; segments, impacts and counters are the world's, the def is `def`.
     StepContext context(const StepContext& world, const WorldDef& def);
@@ -38,6 +38,7 @@ private:
     std::vector<Circle> circles_;
     std::vector<RigidBody> bodies_;
     std::vector<Pivot> pivots_;
+    std::vector<Joint> joints_;
     std::vector<int> circleMap_;     // copy -> world
     std::vector<int> bodyMap_;       // copy -> world
     std::vector<int> circleInverse_; // world -> copy, -1 when not copied

@@ -25,6 +25,25 @@ bool sameJoint(const Joint& x, const Joint& y) {
 
 } // namespace
 
+namespace {
+constexpr std::int64_t kCirclePairBase = std::int64_t{1} << 32;
+std::int64_t circlePairKey(int a, int b) {
+    return static_cast<std::int64_t>(std::min(a, b)) * kCirclePairBase + std::max(a, b);
+}
+} // namespace
+
+void connectedCirclePairs(std::span<const Joint> joints, std::vector<std::int64_t>& pairs) {
+    pairs.clear();
+    for (const Joint& j : joints)
+        if (!j.def.collideConnected && j.circleA >= 0 && j.circleB >= 0)
+            pairs.push_back(circlePairKey(j.circleA, j.circleB));
+    std::sort(pairs.begin(), pairs.end());
+}
+
+bool connectedCircles(std::span<const std::int64_t> pairs, int a, int b) {
+    return !pairs.empty() && std::binary_search(pairs.begin(), pairs.end(), circlePairKey(a, b));
+}
+
 bool jointsTurnCircles(std::span<const Joint> joints) {
     return std::any_of(joints.begin(), joints.end(), [](const Joint& j) { return j.circleA >= 0 || j.circleB >= 0; });
 }

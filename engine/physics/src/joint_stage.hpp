@@ -7,6 +7,7 @@
 #include "joint_solver.hpp"
 #include "step_method.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace rube {
@@ -38,6 +39,14 @@ private:
 
 /// True when some joint ends on a circle: the solver must turn circles this step.
 bool jointsTurnCircles(std::span<const Joint> joints);
+
+/// The pairs of circles a joint joins without collideConnected, as a * 2^32 + b with a < b,
+/// sorted: the circle solver's contacts and sweeps leave them out (rigid_stage.cpp does the same
+/// for pairs with a rigid body).
+void connectedCirclePairs(std::span<const Joint> joints, std::vector<std::int64_t>& pairs);
+
+/// Whether circles a and b are among `pairs` (connectedCirclePairs).
+bool connectedCircles(std::span<const std::int64_t> pairs, int a, int b);
 
 /// Calls list(i) for each circle a joint ends on.
 template <class List>

@@ -6,10 +6,13 @@
 // search for the rest of the step, and pushed apart at its end. A resting contact on a static line's
 // face holds the ball on it: for the rest of the step it slides along the face under the part of
 // gravity the face does not cancel, so its next impact (the other side of a V) is found exactly,
-// and a ball held by two faces that are not parallel stands still. Meant for sparse scenes: every
+// and a ball held by two faces that are not parallel stands still. A circle on a spring to a fixed
+// point moves on the spring's closed form instead (exact_springs.hpp), its times of impact found by
+// conservative advancement to round-off (exact_spring_impacts.hpp). Meant for sparse scenes: every
 // event costs an O(n^2) search, and a pile of many balls is the solver method's job.
 #include "block_pairs.hpp"
 #include "exact_held_faces.hpp"
+#include "exact_spring_impacts.hpp"
 #include "kinematic_pose.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
@@ -19,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -70,12 +74,16 @@ class ExactMethod final : public StepMethod {
 public:
     void step(StepContext& ctx, double dt) override {
         circleCount_ = static_cast<int>(ctx.circles.size());
+        dt_ = dt;
         // Memory O(n + resting pairs): a table of every pair's state was n x (n + segments) bytes,
         // 10 GB for 100,000 circles, and clearing it cost O(n^2) every step.
         restingOf_.resize(ctx.circles.size());
         for (std::vector<RestingPair>& list : restingOf_) list.clear(); // capacity kept: no allocation once grown
         blockResting_.clear();
         held_.reset(ctx.circles.size(), ctx.def.gravity);
+        // Throws, before anything moved, when a joint has no closed form (exact_springs.hpp).
+        springs_.build(ctx);
+        if (!springs_.empty()) keepStart(ctx);
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
         // resolve it" (lecture 3). Work is bounded by def.maxEventsPerStep.
@@ -162,6 +170,13 @@ private:
                 // (the lecture's quadratic); against a kinematic circle the relative motion is a parabola.
                 // A ball held on a face accelerates with what the face leaves of gravity.
                 const Vec2 a = held_.acceleration(i);
+                if (!springs_.empty() && (springs_.pathOf(i) || springs_.pathOf(j))) {
+                    // A spring's closed form is no polynomial: the gap's first root by advancement.
+                    consider(trajectoryCircleCollision(trajectoryOf(ctx, i, horizon), c.radius,
+                                                       trajectoryOf(ctx, j, horizon), o.radius, horizon),
+                             i, Other::circle, j);
+                    continue;
+                }
                 const CircleMotion motion{c.position, c.velocity - o.velocity, c.radius,
                                           dynamicOther ? a - held_.acceleration(j) : a};
                 consider(circleCircleCollision(motion, o.position, o.radius, horizon), i, Other::circle, j);
@@ -169,6 +184,12 @@ private:
             for (int k = 0; k < static_cast<int>(ctx.segments.size()); ++k) {
                 const Segment& s = ctx.segments[k];
                 if (resting(i, Other::segment, k)) continue;
+                if (!springs_.empty() && springs_.pathOf(i)) {
+                    const auto hit = trajectorySegmentCollision(trajectoryOf(ctx, i, horizon), c.radius, s.a, s.b,
+                                                                velocityTowards(s, c.position), s.radius, horizon);
+                    consider(hit, i, hit && hit->lineCap ? Other::segmentCap : Other::segment, k);
+                    continue;
+                }
                 const CircleMotion motion{c.position, c.velocity - velocityTowards(s, c.position), c.radius,
                                           held_.acceleration(i)};
                 const auto hit = circleSegmentCollision(motion, s.a, s.b, s.radius, horizon);
@@ -195,12 +216,42 @@ private:
         return best;
     }
 
-    // Moves every body over t: dynamic ones exactly along their parabola, kinematic ones linearly.
+    // The settle's resting threshold for a pair: the world's (2 |g| dt + 1e-3 unless set), or as much
+    // for the acceleration a spring gives a circle of the pair, |omega^2 (p - x_eq) + 2 zeta omega v|,
+    // which may be far above g: a spring-held ball resting on the floor (its pair left out of the
+    // search) sinks |a| dt^2 / 2 within the step and must be settled at rest, not bounced off with the
+    // speed the spring gave it. Impacts within the step keep the world's: they are real approaches.
+    double restingSpeedOf(const StepContext& ctx, int i, int j) const {
+        if (springs_.empty()) return ctx.restingSpeed;
+        double speed = ctx.restingSpeed;
+        for (const int k : {i, j}) {
+            const SpringPath* path = k >= 0 ? springs_.pathOf(k) : nullptr;
+            if (!path) continue;
+            const Circle& c = ctx.circles[static_cast<std::size_t>(k)];
+            const Vec2 a = (c.position - path->equilibrium) * (path->omega * path->omega) +
+                           c.velocity * (2.0 * path->zeta * path->omega);
+            speed = std::max(speed, 2.0 * a.length() * dt_ + 1e-3);
+        }
+        return speed;
+    }
+
+    // Circle i's motion from now: a spring's closed form, its parabola, or a straight line.
+    Trajectory trajectoryOf(const StepContext& ctx, int i, double horizon) const {
+        const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
+        if (const SpringPath* path = springs_.pathOf(i)) return springTrajectory(*path, c.position, c.velocity);
+        const Vec2 a = c.motion == Motion::dynamic ? held_.acceleration(i) : Vec2{};
+        return parabolaTrajectory(c.position, c.velocity, a, horizon);
+    }
+
+    // Moves every body over t: dynamic ones exactly along their parabola (or spring's closed form),
+    // kinematic ones linearly.
     void advance(StepContext& ctx, double t) const {
         if (t <= 0.0) return;
         for (std::size_t i = 0; i < ctx.circles.size(); ++i) {
             Circle& c = ctx.circles[i];
-            if (c.motion == Motion::dynamic) {
+            if (const SpringPath* path = springs_.empty() ? nullptr : springs_.pathOf(static_cast<int>(i))) {
+                springMove(*path, c.position, c.velocity, t);
+            } else if (c.motion == Motion::dynamic) {
                 const Vec2 a = held_.acceleration(i);             // gravity, or what the faces holding it leave of it
                 c.position += c.velocity * t + a * (0.5 * t * t); // p + v t + a t^2 / 2
                 c.velocity += a * t;
@@ -258,12 +309,39 @@ private:
                 if ((s.b - s.a).normal().dot(hit.normal) < 0.0) state = kRestingMinus;
             }
             setResting(hit.circle, hit.kind, hit.other, state);
-            if (hit.kind == Other::segment && ctx.bodies.empty()) held_.hold(ctx, hit.circle, hit.other, hit.normal);
+            // A spring-held circle keeps its closed form: a face does not hold it.
+            if (hit.kind == Other::segment && ctx.bodies.empty() && !springs_.pathOf(hit.circle))
+                held_.hold(ctx, hit.circle, hit.other, hit.normal);
         } else {
             // A real impact may drive a body into what it rests on: search those pairs again.
             searchAgain(hit.circle);
             if (dynamicOther) searchAgain(hit.other);
         }
+        if (!springs_.empty()) {
+            stillClosedForm(ctx, hit.circle);
+            if (dynamicOther) stillClosedForm(ctx, hit.other);
+        }
+    }
+
+    // The step's start, kept while springs move: an impact that knocks a spring-held circle off its
+    // closed form puts everything back before the method throws.
+    void keepStart(const StepContext& ctx) {
+        circlesAtStart_.assign(ctx.circles.begin(), ctx.circles.end());
+        segmentsAtStart_.assign(ctx.segments.begin(), ctx.segments.end());
+        impactsAtStart_ = ctx.impacts.size();
+        statsAtStart_ = ctx.stats;
+    }
+
+    // Throws SpringNotExact (with the step put back) when circle i's spring lost its closed form.
+    void stillClosedForm(StepContext& ctx, int i) {
+        const std::string why = springs_.recheck(ctx, i);
+        if (why.empty()) return;
+        std::copy(circlesAtStart_.begin(), circlesAtStart_.end(), ctx.circles.begin());
+        std::copy(segmentsAtStart_.begin(), segmentsAtStart_.end(), ctx.segments.begin());
+        ctx.impacts.resize(impactsAtStart_);
+        ctx.stats = statsAtStart_;
+        throw SpringNotExact("method 'exact' cannot follow circle " + std::to_string(i) + " after an impact: " + why,
+                             i);
     }
 
     void searchAgain(int circle) {
@@ -416,7 +494,8 @@ private:
             bounciness = pairBounciness(c.material, s.material);
         }
         if (!overlap) return 0.0;
-        const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) < ctx.restingSpeed;
+        const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) <
+                               restingSpeedOf(ctx, contact.circle, dynamicOther ? contact.other : -1);
         if (dynamicOther && isResting) {
             // The body holding the other up, nearer the ground, holds still as if of infinite mass.
             const int levelC = levels_[contact.circle], levelO = levels_[contact.other];
@@ -434,12 +513,18 @@ private:
     }
 
     int circleCount_ = 0;
+    double dt_ = 0.0;                                 ///< the step's length (spring-held circles' resting threshold)
     std::vector<std::vector<RestingPair>> restingOf_; ///< per circle: the pairs it rests in for the rest of the step
     std::vector<Contact> contacts_;                   ///< the end-of-step settle's pairs
     std::vector<int> levels_;                         ///< per circle: contacts between it and the ground
     std::vector<Vec2> centres_;                       ///< the clean-up's side reference after a cap hit
     std::vector<BlockPair> blockResting_;             ///< blocks' pairs resting for the rest of the step (few)
     HeldFaces held_;                                  ///< circles held on static faces for the rest of the step (few)
+    ExactSprings springs_;                            ///< circles on springs to fixed points (closed forms)
+    std::vector<Circle> circlesAtStart_;              ///< the step's start, while springs move
+    std::vector<Segment> segmentsAtStart_;
+    std::size_t impactsAtStart_ = 0;
+    StepStats statsAtStart_;
 };
 
 } // namespace

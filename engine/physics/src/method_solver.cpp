@@ -114,6 +114,7 @@ private:
     std::vector<BoundingBox> filingBoxes_;                // per circle: the contact box plus where it is heading
     std::vector<SweptSegment> sweptSegments_;
     std::vector<CandidatePair> pairs_;
+    std::vector<std::int64_t> connected_; // circle pairs a joint keeps apart from colliding (joint_stage.hpp)
     std::vector<ContactConstraint> contacts_;
     std::vector<ContactRecord> records_;
     std::vector<double> gaps_; // per contact: its gap during the current substep's relax passes
@@ -266,6 +267,12 @@ void SolverMethod::findContacts(const StepContext& ctx, double dt) {
         grid_.build(filingBoxes_, sweptSegments_, region, cellSize, 4 * circleCount_ + 64);
         grid_.findPairs(circleBoxes_, segmentBoxes_, isDynamic_, pairs_);
     }
+    // Two circles a joint joins do not touch unless it says they collide (collideConnected).
+    connectedCirclePairs(ctx.joints, connected_);
+    if (!connected_.empty())
+        std::erase_if(pairs_, [&](const CandidatePair& p) {
+            return p.other < circleCount_ && connectedCircles(connected_, p.circle, p.other);
+        });
     buildContacts(pairs_, ctx.circles, ctx.segments, margins_, inverseMass_, cache_, contacts_, records_);
     // A pair closing fast is caught where it will touch, not where it starts (a glance at a cap).
     aimAtTimeOfImpact(contacts_, records_, ctx.circles, ctx.segments, inverseMass_, ctx.def.gravity, dt,
@@ -426,8 +433,8 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
         inFlight_[static_cast<std::size_t>(c.a)] = 0;
         if (c.b < circleCount_) inFlight_[static_cast<std::size_t>(c.b)] = 0;
     }
-    const SweepInput sweepInput{start_,     margins_, bullets_,  isBullet_,
-                                isDynamic_, cache_,   inFlight_, kMaxSweepCellsPerAxis};
+    const SweepInput sweepInput{
+        start_, margins_, bullets_, isBullet_, isDynamic_, cache_, inFlight_, kMaxSweepCellsPerAxis, connected_};
     int impacts = sweep_.run(sweepInput, grid_, ctx, dt);
     if (hasRigid_) impacts += rigid_.sweep(ctx, dt);
     for (Segment& seg : ctx.segments) {

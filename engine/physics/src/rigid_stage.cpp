@@ -114,9 +114,11 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     others_.assign(ctx.circles.size() + ctx.segments.size(), SolverBody{});
     zeros_.assign(others_.size(), 0.0);
     const RigidSolverView massView{states_, others_, zeros_, ctx.circles};
-    // Bodies a joint ties together do not collide (a chain's links overlap at their hinges), as in Box2D.
+    // Bodies a joint ties together do not collide (a chain's links overlap at their hinges), as in Box2D,
+    // unless the joint says they do (collideConnected).
     connected_.clear();
     for (const Joint& j : ctx.joints) {
+        if (j.def.collideConnected) continue;
         const std::int64_t a = j.bodyA >= 0 ? j.bodyA : j.circleA >= 0 ? -1 - j.circleA : kNoBody;
         const std::int64_t b = j.bodyB >= 0 ? j.bodyB : j.circleB >= 0 ? -1 - j.circleB : kNoBody;
         if (a == kNoBody || b == kNoBody) continue;

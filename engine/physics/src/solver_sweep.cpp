@@ -2,6 +2,7 @@
 #include "solver_sweep.hpp"
 
 #include "broadphase_grid.hpp"
+#include "joint_stage.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -102,7 +103,7 @@ ContinuousSweep::Hit ContinuousSweep::earliestHit(int i, const SweepInput& in, B
         if (t >= 0.0 && t < hit.t) hit = {t, circleCount + s};
     };
     const auto tryCircle = [&](int j) {
-        if (j == i) return;
+        if (j == i || connectedCircles(in.connected, i, j)) return;
         const Circle& cj = circles[j];
         // Of two dynamic circles the one that moved further sweeps: clamping the slower one would
         // drag it back from where its contacts put it.

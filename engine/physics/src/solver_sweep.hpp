@@ -36,6 +36,7 @@ struct SweepInput {
     std::span<const std::uint8_t>
         inFlight;            ///< per circle: no contact pushed it this step, so gravity alone bent its path
     int maxCellsPerAxis = 8; ///< a longer path than this looks at every shape instead
+    std::span<const std::int64_t> connected = {}; ///< circle pairs a joint keeps from colliding (joint_stage.hpp)
 };
 
 /// The continuous pass, with candidate buffers kept between steps.

@@ -202,7 +202,7 @@ void World::step() {
     // would register as a fresh impact every step.
     const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
-    if (!joints_.empty()) requireJointMethod(def_.method);
+    if (!joints_.empty()) requireJointMethod(def_.method, joints_, circles_, def_.gravity, !bodies_.empty());
     // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
     // can reach the others, and where the solver cannot resolve a speed it is clamped (speed_limits.cpp).
     const bool noneIsolated = stats_.isolatedBodies == 0;

@@ -3,6 +3,7 @@
 // gear, both joints it couples act; otherwise it waits outside joints_ (as ropes and pivots do).
 #include "rube/physics/world.hpp"
 
+#include "exact_springs.hpp"
 #include "world_handles.hpp"
 
 #include <cmath>
@@ -55,10 +56,19 @@ void checkDef(const JointDef& d) {
 
 } // namespace
 
-void requireJointMethod(Method method) {
-    if (!movesTurningBodies(method))
-        throw std::logic_error("method '" + std::string(methodName(method)) +
-                               "' cannot move joints: use method 'auto' or 'solver'");
+void requireJointMethod(Method method, std::span<const Joint> joints, std::span<const Circle> circles, Vec2 gravity,
+                        bool withBodies) {
+    if (movesTurningBodies(method)) return;
+    const auto refuse = [&](const std::string& why) {
+        throw std::logic_error("method '" + std::string(methodName(method)) + "' cannot move joints" + why +
+                               ": use method 'auto' or 'solver'");
+    };
+    if (method != Method::exact) refuse("");
+    // Exact follows a spring to a fixed point on its closed form, where it has one (exact_springs.hpp).
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+        const std::string why = exactSpringRefusal(joints[k], circles, gravity, withBodies);
+        if (!why.empty()) refuse(" (joint " + std::to_string(k) + ": " + why + ")");
+    }
 }
 
 JointId World::addJoint(const JointDef& def) {

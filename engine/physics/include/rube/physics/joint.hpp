@@ -7,10 +7,13 @@
 /// radii's ratio turning both wheels the same way.
 ///
 /// Which methods carry them: the solver (substepped, soft as Box2D v3's joints, springs integrated
-/// as forces by velocity Verlet), and auto, which gives every island with a jointed body to the
-/// solver (a joint's ends share an island).
-/// discrete, turn-based and exact refuse a world with joints (World::step throws), as they refuse
-/// turning bodies. See engine/physics/ARCHITECTURE.md ("Joints").
+/// as forces by velocity Verlet); exact, a spring from a circle's centre to a fixed point where its
+/// motion has a closed form (rest length 0 and undamped, or along the spring's line with gravity
+/// along it), refusing every other joint (World::step throws, naming why); and auto, which gives
+/// such a spring's island to exact and every other island with a jointed body to the solver (a
+/// joint's ends share an island). discrete and turn-based refuse a world with joints, as they
+/// refuse turning bodies. Bodies a joint joins do not collide with each other unless
+/// JointDef::collideConnected. See engine/physics/ARCHITECTURE.md ("Joints").
 
 #include "rube/physics/handles.hpp"
 #include "rube/physics/vec2.hpp"
@@ -77,6 +80,10 @@ struct JointDef {
     /// gear: angleOrSlide(jointA) + ratio angleOrSlide(jointB) = constant; pulley: the rope's ratio.
     double ratio = 1.0;
     JointId jointA, jointB; ///< gear: a revolute, and a revolute or a prismatic
+    /// Whether the two bodies it joins still collide with each other (Box2D's collideConnected).
+    /// false, the default: a hinge's or a weld's overlapping parts, a spring's two balls pass
+    /// through each other. Every kind but gear (whose joints' bodies decide).
+    bool collideConnected = false;
 };
 
 /// A joint in the world: its definition and where its ends are this step.

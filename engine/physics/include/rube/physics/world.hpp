@@ -329,8 +329,13 @@ bool anyTurning(std::span<const RigidBody> bodies, std::span<const Pivot> pivots
 /// blocks (fixed-rotation boxes) suit every method; turning bodies, capsules and pivots need solver or auto.
 void requireRigidBodyMethod(Method method, std::span<const RigidBody> bodies, std::span<const Pivot> pivots);
 
-/// Throws std::logic_error unless `method` carries joints: only solver and auto do.
-void requireJointMethod(Method method);
+/// Throws std::logic_error unless `method` carries `joints` as the bodies stand: solver and auto
+/// carry every joint; exact only springs from a circle's centre to a fixed point, where the motion
+/// has a closed form (rest length 0 and undamped, or the circle moving along the spring's line with
+/// gravity along it), and not beside rigid bodies; discrete and turn-based none. The message names
+/// the first joint refused and why.
+void requireJointMethod(Method method, std::span<const Joint> joints, std::span<const Circle> circles, Vec2 gravity,
+                        bool withBodies);
 
 /// A 64-bit FNV-1a hash of every body's position and velocity bits: equal hashes mean
 /// bit-identical states (the determinism check, as Box2D's determinism test does).

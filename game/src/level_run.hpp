@@ -35,7 +35,8 @@ struct ItemState {
     CircleId circle;    ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
     double aim = 0.0;   ///< cannons: the barrel's angle now, radians
     bool hit = false;   ///< targets and switches: touched by a ball
-    bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed)
+    bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed);
+                          ///< lasers: switched an odd number of times (on unless they started on)
     bool fired = false;   ///< cannons: have shot; timers, plates, candles, detectors: have switched (once)
     std::optional<double> timedShot;   ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s

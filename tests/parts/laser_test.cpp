@@ -4,6 +4,7 @@
 // the centre line; the detector's circle); a ball in the way stops it; a laser switched on by a
 // trigger shines from then, and the detector switches what it names once.
 #include "level_run.hpp"
+#include "part_text.hpp"
 #include "scene_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,6 +18,7 @@
 
 using namespace rube;
 using namespace rube::game;
+using rube::test::num;
 
 namespace {
 
@@ -24,12 +26,6 @@ constexpr double kMirrorRadius = 0.05; // a board's half thickness (part_common.
 constexpr double kMirrorLength = 1.5;  // the test's mirrors, m
 constexpr double kDetectorRadius = 0.5;
 constexpr double kLaserRadius = 0.25;
-
-std::string num(double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
-}
 
 struct Route {
     Vec2 mirrors[3];

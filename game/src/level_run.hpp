@@ -40,7 +40,7 @@ struct ItemState {
     bool fired = false;   ///< cannons: have shot; timers, plates, candles, detectors: have switched (once)
     std::optional<double> timedShot;   ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
-    std::optional<double> since;       ///< timers, candles, pressure plates: when their clock started (the run, a
+    std::optional<double> since;       ///< timers, candles, pressure plates, lifts: when their clock started (a
                                        ///< switch, a weight coming to rest on it), s; none while it has not
     int field = -1; ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
 };

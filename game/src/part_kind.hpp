@@ -213,6 +213,12 @@ public:
     virtual void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const {
         (void)run, (void)item, (void)point, (void)by;
     }
+    /// True when a laser's beam reflects off its segments (r = d - 2 (d.n) n) rather than stopping there.
+    virtual bool reflects() const { return false; }
+    /// A laser's beam reached it at `point` (`by` names the laser): a detector switches.
+    virtual void beamReached(LevelRun& run, int item, Vec2 point, const std::string& by) const {
+        (void)run, (void)item, (void)point, (void)by;
+    }
     /// A switch named it, or a script's fire, detonate or toggle did: what it does then.
     virtual void trigger(LevelRun& run, int item) const { (void)run, (void)item; }
     /// The action a click on it takes while running, if any (fire, detonate, toggle).

@@ -2,6 +2,7 @@
 // world's time first reaches its lighting + burn_time (so within one step after it), over a range of
 // burn times and time steps; an unlit candle waits for a switch; the rope's ball then falls freely.
 #include "level_run.hpp"
+#include "part_text.hpp"
 #include "scene_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -13,14 +14,10 @@
 
 using namespace rube;
 using namespace rube::game;
+using rube::test::firstError;
+using rube::test::num;
 
 namespace {
-
-std::string num(double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
-}
 
 // A ball hanging on a rope, and a candle under the rope set to burn it.
 std::string candleLevel(double dt, double burnTime, bool lit) {
@@ -39,11 +36,6 @@ std::optional<std::int64_t> cutStep(LevelRun& run, std::int64_t limit, std::int6
         if (run.world().ropes()[0].cut) return run.steps();
     }
     return std::nullopt;
-}
-
-std::string firstError(const std::string& text) {
-    const SceneLoad load = parseScene(text, "t.toml");
-    return load.errors.empty() ? std::string("no error") : load.errors.front().format();
 }
 
 } // namespace

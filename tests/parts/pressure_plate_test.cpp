@@ -2,6 +2,7 @@
 // it touches it at t_c = sqrt(2 h / g); the plate switches what it names within one step after
 // t_c + hold when m >= min_mass, and never when m < min_mass, over balls, heights, holds and steps.
 #include "level_run.hpp"
+#include "part_text.hpp"
 #include "scene_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -13,16 +14,11 @@
 
 using namespace rube;
 using namespace rube::game;
+using rube::test::num;
 
 namespace {
 
 constexpr double kThickness = 0.08; // the plate's half thickness, m
-
-std::string num(double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
-}
 
 // A plate at the origin wired to a bomb far away, and a ball of `kind` (radius r) whose bottom is
 // `gap` m above the plate's top.

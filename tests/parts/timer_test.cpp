@@ -2,6 +2,7 @@
 // time first reaches its start + delay, over a range of delays and time steps; a timer that waits for
 // a switch counts from the step it was switched; it names several things at once (wires).
 #include "level_run.hpp"
+#include "part_text.hpp"
 #include "scene_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -11,14 +12,10 @@
 
 using namespace rube;
 using namespace rube::game;
+using rube::test::firstError;
+using rube::test::num;
 
 namespace {
-
-std::string num(double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.17g", v);
-    return text;
-}
 
 // A timer named "clock" wired to two bombs far apart (nothing else moves), or to `triggers` as written.
 std::string timerLevel(double dt, double delay, const std::string& start) {
@@ -35,11 +32,6 @@ std::vector<std::int64_t> explosionSteps(const LevelRun& run) {
     for (const GameEvent& e : run.events())
         if (e.kind == EventKind::explosion) steps.push_back(e.step);
     return steps;
-}
-
-std::string firstError(const std::string& text) {
-    const SceneLoad load = parseScene(text, "t.toml");
-    return load.errors.empty() ? std::string("no error") : load.errors.front().format();
 }
 
 } // namespace

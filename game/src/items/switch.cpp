@@ -1,7 +1,7 @@
 // The switch: a fixed button that, when a ball first touches it (or a click or script toggles it),
-// triggers the item it names (fires a cannon, sets off a bomb, flips a fan or magnet, lights a
-// rocket) or cuts the [[rope]] it names.
-#include "part_common.hpp"
+// switches what it names (`triggers`, a name or [names]: fires a cannon, sets off a bomb, flips a
+// fan or magnet, lights a rocket, starts a timer, ...; cuts a [[rope]]), with a wire drawn to each.
+#include "wires.hpp"
 
 #include "script_file.hpp"
 
@@ -9,18 +9,12 @@ namespace rube::game::parts {
 namespace {
 
 struct SwitchParams {
-    double radius = 0.2;  // m
-    std::string triggers; // the name of what it triggers, or of the [[rope]] it cuts
-    SourcePlace at;       // where the file wrote `triggers`, for the message when it names nothing that fits
-    bool given = false;   // `triggers` was written (an empty name is then an error; a missing one is already)
+    double radius = 0.2; // m
+    Wires wires;         // what it switches
 };
 
 constexpr PartKey kKeys[] = {
-    kKindKey,
-    kNameKey,
-    kPositionKey,
-    {"radius", "0.2", "m"},
-    {"triggers", "required", "the name of a cannon, bomb, fan, magnet or rocket, or of a [[rope]] (cut)"}};
+    kKindKey, kNameKey, kPositionKey, {"radius", "0.2", "m"}, {"triggers", "required", kWiresDoc}};
 
 class SwitchKind final : public PartKind {
 public:
@@ -39,18 +33,11 @@ public:
         (void)reading;
         SwitchParams& p = item.params.as<SwitchParams>();
         if (const auto r = table.number("radius", kSizeRange)) p.radius = *r;
-        p.triggers = table.string("triggers", Need::required).value_or("");
-        p.at = table.valuePlace("triggers");
-        p.given = table.find("triggers") != nullptr;
+        p.wires = readWires(table, Need::required);
     }
     // Checked once every item is known, so a switch may name a later cannon.
     void checkReferences(const ItemDesc& item, SceneReading& reading) const override {
-        const SwitchParams& p = item.params.as<SwitchParams>();
-        if (!p.given || reading.scene.findRope(p.triggers) >= 0) return; // a switch may cut a named [[rope]]
-        if (std::string message = itemReferenceError(reading.scene.level, "triggers", p.triggers, PartRole::triggered,
-                                                     "", &reading.scene.ropeNames);
-            !message.empty())
-            reading.diag.error(p.at, std::move(message));
+        checkWires(item.params.as<SwitchParams>().wires, reading);
     }
     ItemBodies bodies(const ItemDesc& item) const override {
         ItemBodies bodies;
@@ -68,16 +55,15 @@ public:
     }
     void trigger(LevelRun& run, int item) const override {
         run.partState(item).pressed = true; // a click looks like a ball's press (hit() comes here too)
-        const std::string& name = run.items()[static_cast<std::size_t>(item)].params.as<SwitchParams>().triggers;
-        if (run.scene().findRope(name) >= 0) return run.cutRope(name);
-        if (const int target = run.find(name); target >= 0)
-            run.items()[static_cast<std::size_t>(target)].kind->trigger(run, target);
+        switchWired(run, run.items()[static_cast<std::size_t>(item)].params.as<SwitchParams>().wires);
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     void draw(const PartDrawing& d) const override {
-        const float r = static_cast<float>(itemOf(d).params.as<SwitchParams>().radius);
-        d.list.box(pt(d.run.itemPosition(d.item)), {r, 0.6f * r}, 0.0f,
-                   style(stateOf(d).hit || stateOf(d).pressed ? "highlight" : "box", "box_outline"));
+        const SwitchParams& p = itemOf(d).params.as<SwitchParams>();
+        const float r = static_cast<float>(p.radius);
+        const bool on = stateOf(d).hit || stateOf(d).pressed;
+        drawWires(d, d.run.itemPosition(d.item), p.wires, on);
+        d.list.box(pt(d.run.itemPosition(d.item)), {r, 0.6f * r}, 0.0f, style(on ? "highlight" : "box", "box_outline"));
     }
 };
 

@@ -30,7 +30,7 @@ inline Wires readWires(TableReader& table, Need need) {
     if (!node) return wires;
     const auto take = [&](const toml::node& element) {
         const auto* name = element.as_string();
-        if (!name || name->get().empty()) {
+        if (!name) { // an empty name is kept: checkWires reports it as naming nothing
             table.error(placeOf(element.source()), "triggers must be a name or an array of names");
             return;
         }

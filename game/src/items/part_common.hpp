@@ -98,6 +98,7 @@ public:
     std::optional<CircleDef> shot(const ItemDesc& item) const override { return bodies(item).circles.front(); }
     void draw(const PartDrawing& d) const override {
         const ItemState& state = stateOf(d);
+        if (state.circle.isNull()) return; // gone from the world (a balloon a needle popped)
         const Circle& c = d.run.world().circle(state.circle);
         decorateBehind(c, d.list);
         d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()),

@@ -2,23 +2,18 @@
 // pair's friction (the crate's times the floor's, here 1), over speeds and frictions, within 1 %.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
-
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 // A default crate resting on a floor of friction 1, sliding right at `speed`, its own friction `mu`.
 std::string slidingCrate(double speed, double mu) {

@@ -4,27 +4,22 @@
 // heights and either side of that angle.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
 
 constexpr double kThicknessPerHeight = 7.5 / 48.0;
-
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 // A domino of `height` turned `degrees` counter-clockwise, its lower-left corner on a floor of
 // friction 1 at the origin: its centre is that corner plus R(a) (t/2, h/2).

@@ -4,25 +4,20 @@
 // step), and whole before. Other balls bounce off the point, and a balloon meeting the shaft bounces.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
 
 constexpr double kPoint = 0.02, kBalloon = 0.35, kDt = 0.01;
-
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 std::string needleAndBall(double angle, Vec2 tip, const std::string& ball, Vec2 at) {
     return "name = \"pop\"\n[world]\ntime_step = " + num(kDt) + "\n[[item]]\nkind = \"needle\"\nposition = [" +

@@ -4,24 +4,19 @@
 // stated loss when it is not; a funnel lets a ball narrower than its opening through and holds a wider one.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
-
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 std::string ball(Vec2 at, double radius, double bounciness) {
     return "[[circle]]\nname = \"b\"\nposition = [" + num(at.x) + ", " + num(at.y) + "]\nradius = " + num(radius) +

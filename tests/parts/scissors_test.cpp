@@ -3,25 +3,20 @@
 // t = sqrt(2 d / g): the rope is whole after every step before that one and cut after it.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
 
 constexpr double kDt = 0.01;
-
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 // A bob hanging at rest on a rope "cord", scissors "shears" at the origin (radius 0.2) that cut it, and
 // `extra` items; then a ball of `kind` (radius r) whose bottom is d above the top of `under`.

@@ -56,6 +56,17 @@ inline const ItemState& stateOf(const PartDrawing& d) { return d.run.states()[st
 /// The item in the run.
 inline const ItemDesc& itemOf(const PartDrawing& d) { return d.run.items()[static_cast<std::size_t>(d.item)]; }
 
+/// A ball's first touch of `item` (a switch, scissors): marks it hit and reports the hit event; false
+/// when it was touched before, for only the first touch is news.
+inline bool firstTouch(LevelRun& run, int item, Vec2 point, const std::string& by) {
+    ItemState& state = run.partState(item);
+    if (state.hit) return false;
+    state.hit = true;
+    run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                point, 0, by});
+    return true;
+}
+
 /// A ball's parameters: every ball kind has these and nothing more.
 struct BallParams {
     double radius = 0.3; ///< m

@@ -56,12 +56,7 @@ public:
         return bodies;
     }
     void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
-        ItemState& state = run.partState(item);
-        if (state.hit) return; // only the first touch is news
-        state.hit = true;
-        run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
-                    point, 0, by});
-        trigger(run, item);
+        if (firstTouch(run, item, point, by)) trigger(run, item);
     }
     void trigger(LevelRun& run, int item) const override {
         ItemState& state = run.partState(item);

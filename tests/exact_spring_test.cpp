@@ -319,7 +319,7 @@ TEST_CASE("exact spring: where there is no closed form the exact method refuses 
     CHECK_THROWS_WITH(two.step(), Catch::Contains("between two bodies"));
 }
 
-TEST_CASE("exact spring: an impact that knocks the ball off its spring's line puts the step back and refuses; auto "
+TEST_CASE("exact spring: an impact that knocks the ball off its spring's line puts the step back and refuses, and auto "
           "hands it to the solver",
           "[exact][joints][spring]") {
     // A ball hanging on a spring with a rest length falls onto a slope: the bounce throws it sideways,

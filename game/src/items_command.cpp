@@ -1,10 +1,11 @@
 // `rube items --sheet DIR`: each kind's default item, alone in a small level, drawn by the kind's
-// own draw() over the world's boards (as LevelView draws a level) with its inventory icon
+// own draw() over the world's boards and boxes (as LevelView draws a level) with its inventory icon
 // (drawIcon) in a corner and its name on top, through the offscreen renderer; the PNGs go through
 // the FrameWriter `rube run --out` uses, so each file appears whole or not at all.
 #include "items_command.hpp"
 
 #include "level_run.hpp"
+#include "scene_view.hpp"
 #include "part_catalogue.hpp"
 
 #include "rube/render/draw_list.hpp"
@@ -65,6 +66,7 @@ void drawKind(ItemKind kind, const render::Camera& camera, render::FrameSize siz
     for (const Segment& s : run.world().segments())
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius),
                      {palette["ground"], palette["ground_outline"], 1.5f});
+    drawRigidBodies(run.world(), list); // crates and dominoes: boxes, drawn as in a level
     kind->draw({run, 0, list});
     const float ppm = camera.pixelsPerMetre(size);
     const render::Point corner = camera.toWorld(

@@ -32,7 +32,8 @@ void readRopes(TableReader& root, SceneReading& reading);
 void readRigidBodies(TableReader& root, SceneReading& reading);
 /// Reads every [[joint]] into scene.joints (after the bodies, which joints name).
 void readJoints(TableReader& root, SceneReading& reading);
-/// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints.
+/// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints, its
+/// own or its parts' (a crate, a domino), or those of a kind its inventory gives.
 bool needsRotatingSolver(const SceneDesc& scene);
 /// Why `method` cannot move what needsRotatingSolver found, or empty when it can: solver and auto
 /// move it all; exact a scene whose only such things are springs to fixed points with a closed

@@ -1,6 +1,7 @@
 // Scene files: [[box]] and [[capsule]], rigid bodies that turn (or lecture 3's blocks with
 // fixed_rotation), and [[pivot]], a rigid body pinned to the world at a point. Rigid bodies are
 // numbered in file order, every [[box]] first, then every [[capsule]]; a pivot names one by index or name.
+#include "part_kind.hpp"
 #include "scene_errors.hpp"
 #include "scene_reading.hpp"
 
@@ -154,10 +155,28 @@ bool methodMovesRotating(const SceneDesc& scene, Method method, std::string& why
     }
 }
 
+namespace {
+
+// True when an item's bodies hold a joint or a rigid body that turns (a crate, a domino, a motor's wheel).
+bool turns(const ItemBodies& bodies) {
+    if (!bodies.joints.empty()) return true;
+    for (const RigidBodyDef& b : bodies.rigidBodies)
+        if (!isBlock(b)) return true;
+    return false;
+}
+
+} // namespace
+
 bool needsRotatingSolver(const SceneDesc& scene) {
     if (!scene.pivots.empty() || !scene.joints.empty()) return true;
     for (const RigidBodyDef& b : scene.bodies)
         if (!isBlock(b)) return true;
+    // The level's parts, and those its inventory lets a player place (as made: a placement has no keys).
+    for (const ItemDesc& item : scene.level.items)
+        if (turns(item.kind->bodies(item))) return true;
+    for (const auto& [name, count] : scene.level.inventory)
+        if (const ItemKind kind = findPartKind(name); kind && count > 0 && turns(kind->bodies(kind->make({}))))
+            return true;
     return false;
 }
 

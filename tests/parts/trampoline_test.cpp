@@ -3,25 +3,19 @@
 // keeping its speed along the bed. Tested over balls, impact speeds, beds and tilts.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 using namespace rube;
 using namespace rube::game;
+using test::num;
 
 namespace {
-
-// `x` written so that it reads back exactly.
-std::string num(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
 
 struct Ball {
     const char* kind;

@@ -36,6 +36,7 @@ TEST_CASE("wires: a switch names several things and switches each, whatever its 
         if (kind->name() == std::string_view("bomb")) keys = "trigger = \"switch\"\n", ++bombs;
         if (kind->name() == std::string_view("timer")) keys = "delay = 0\nstart = \"switch\"\ntriggers = \"cord\"\n";
         if (kind->name() == std::string_view("candle")) keys = "burns = \"cord\"\nlit = false\n";
+        if (kind->name() == std::string_view("scissors")) keys = "cuts = \"cord\"\n";
         level += "[[item]]\nkind = \"" + std::string(kind->name()) + "\"\nname = \"" + name + "\"\nposition = [" +
                  std::to_string(x) + ", 0]\n" + keys;
         names += ", \"" + name + "\"";

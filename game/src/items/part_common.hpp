@@ -10,6 +10,7 @@
 #include "rube/render/palette.hpp"
 
 #include <array>
+#include <cmath>
 #include <numbers>
 
 namespace rube::game::parts {
@@ -55,6 +56,17 @@ inline const ItemState& stateOf(const PartDrawing& d) { return d.run.states()[st
 /// The item in the run.
 inline const ItemDesc& itemOf(const PartDrawing& d) { return d.run.items()[static_cast<std::size_t>(d.item)]; }
 
+/// A ball's first touch of `item` (a switch, scissors): marks it hit and reports the hit event; false
+/// when it was touched before, for only the first touch is news.
+inline bool firstTouch(LevelRun& run, int item, Vec2 point, const std::string& by) {
+    ItemState& state = run.partState(item);
+    if (state.hit) return false;
+    state.hit = true;
+    run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
+                point, 0, by});
+    return true;
+}
+
 /// A ball's parameters: every ball kind has these and nothing more.
 struct BallParams {
     double radius = 0.3; ///< m
@@ -97,6 +109,7 @@ public:
     std::optional<CircleDef> shot(const ItemDesc& item) const override { return bodies(item).circles.front(); }
     void draw(const PartDrawing& d) const override {
         const ItemState& state = stateOf(d);
+        if (state.circle.isNull()) return; // gone from the world (a balloon a needle popped)
         const Circle& c = d.run.world().circle(state.circle);
         decorateBehind(c, d.list);
         d.list.circleWithSpoke(pt(c.position), static_cast<float>(c.radius), static_cast<float>(c.velocity.angle()),
@@ -164,6 +177,55 @@ protected:
     virtual double length() const = 0;
     /// Bounciness C.
     virtual double bounciness() const = 0;
+};
+
+/// A loose box's parameters (crates, dominoes): its size, mass and starting velocity.
+struct LooseBoxParams {
+    Vec2 size{0.5, 0.5}; ///< width and height at angle 0, m
+    double mass = 1.0;   ///< kg
+    Vec2 velocity;       ///< initial velocity, m/s
+    Material material;   ///< bounciness and friction (a pair's mu is the product of both, as its C)
+};
+
+/// A dynamic box that turns (a rigid body, solved by `auto` or `solver`), placed and turned by the
+/// player: the kinds differ in how they read their size, mass and material, and in their look.
+class LooseBoxKind : public PartKind {
+public:
+    bool placeable() const override { return true; }
+    bool turns() const override { return true; }
+    double turnPeriod() const override { return 180.0; } // a box is the same after half a turn
+    ItemDesc make(Vec2 position) const override { return made(position, defaults()); }
+    ItemBodies bodies(const ItemDesc& item) const override {
+        const LooseBoxParams& p = item.params.as<LooseBoxParams>();
+        RigidBodyDef box;
+        box.shape = BodyShape::box;
+        box.position = item.position;
+        box.angle = item.angle;
+        box.velocity = p.velocity;
+        box.halfExtents = p.size * 0.5;
+        box.mass = p.mass;
+        box.material = p.material;
+        ItemBodies bodies;
+        bodies.rigidBodies.push_back(box);
+        return bodies;
+    }
+    /// Picked anywhere on the box as it stands now (`at`, at the item's angle), `tolerance` around it.
+    bool picked(const ItemDesc& item, Vec2 at, Vec2 cursor, double tolerance) const override {
+        const Vec2 half = item.params.as<LooseBoxParams>().size * 0.5;
+        const Vec2 x = Vec2::fromAngle(item.angle), d = cursor - at;
+        return std::abs(d.dot(x)) <= half.x + tolerance && std::abs(d.dot(x.perpendicular())) <= half.y + tolerance;
+    }
+
+protected:
+    /// The parameters of an item as made.
+    virtual LooseBoxParams defaults() const = 0;
+    /// Reads `angle` and `velocity`, the keys every loose box has.
+    static void readPose(TableReader& table, ItemDesc& item) {
+        if (const auto a = table.number("angle", kAngleRange)) item.angle = radians(*a);
+        if (const auto v = table.vec2("velocity")) item.params.as<LooseBoxParams>().velocity = *v;
+    }
+    /// The box as it is in the run (drawn by the world's bodies; kinds draw over it).
+    static const RigidBody& bodyOf(const PartDrawing& d) { return d.run.world().body(stateOf(d).body); }
 };
 
 } // namespace rube::game::parts

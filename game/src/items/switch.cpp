@@ -46,12 +46,7 @@ public:
     }
     void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
         // Only the first touch is news, and only it flips what the switch names.
-        ItemState& state = run.partState(item);
-        if (state.hit) return;
-        state.hit = true;
-        run.report({EventKind::hit, run.steps(), run.world().time(), run.items()[static_cast<std::size_t>(item)].name,
-                    point, 0, by});
-        trigger(run, item);
+        if (firstTouch(run, item, point, by)) trigger(run, item);
     }
     void trigger(LevelRun& run, int item) const override {
         run.partState(item).pressed = true; // a click looks like a ball's press (hit() comes here too)

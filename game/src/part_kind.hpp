@@ -95,6 +95,10 @@ struct ItemJoint {
     /// first joint of the item named in gearItemA / gearItemB (a belt between two wheels).
     int gearA = -1, gearB = -1;
     std::string gearItemA, gearItemB;
+    /// gear: a belt over the two wheels the coupled joints turn (their ends b): def.ratio is set when
+    /// the item joins the World to -r_B / r_A of their rims (a circle's radius, a body's larger half
+    /// extent), so the second turns at r_A / r_B of the first, the same way.
+    bool belt = false;
 };
 
 /// The physics bodies one item adds (circles, segments and rigid bodies, each in order), the joints
@@ -133,7 +137,8 @@ enum class PartRole : std::uint8_t {
     hitReport,  ///< `hit` expectations: reports the first touch of a ball
     triggered,  ///< what a switch's `triggers` may name (besides a rope)
     goalTarget, ///< a goal's `target`, counted by all-targets
-    goalBucket  ///< a goal's `bucket`
+    goalBucket, ///< a goal's `bucket`
+    wheel       ///< what a belt or a gear may name: its first joint is the axle it turns on
 };
 
 /// What a kind draws with, handed to PartKind::draw.

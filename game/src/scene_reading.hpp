@@ -32,7 +32,8 @@ void readRopes(TableReader& root, SceneReading& reading);
 void readRigidBodies(TableReader& root, SceneReading& reading);
 /// Reads every [[joint]] into scene.joints (after the bodies, which joints name).
 void readJoints(TableReader& root, SceneReading& reading);
-/// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints.
+/// True when the scene has bodies only the solver moves: turning boxes, capsules, pivots or joints,
+/// its own or those of the parts it holds or gives to place (a motor's axle).
 bool needsRotatingSolver(const SceneDesc& scene);
 
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.

@@ -4,6 +4,7 @@
 #include "scene_errors.hpp"
 #include "scene_reading.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -140,6 +141,17 @@ bool needsRotatingSolver(const SceneDesc& scene) {
     if (!scene.pivots.empty() || !scene.joints.empty()) return true;
     for (const RigidBodyDef& b : scene.bodies)
         if (!isBlock(b)) return true;
+    // Parts with joints or turning bodies (a motor's axle, a paddle), fixed in the level or in its
+    // inventory to be placed.
+    const auto turns = [](const ItemBodies& bodies) {
+        return !bodies.joints.empty() || std::any_of(bodies.rigidBodies.begin(), bodies.rigidBodies.end(),
+                                                     [](const RigidBodyDef& b) { return !isBlock(b); });
+    };
+    for (const ItemDesc& item : scene.level.items)
+        if (turns(itemBodies(item))) return true;
+    for (const auto& [name, count] : scene.level.inventory)
+        if (const ItemKind kind = findPartKind(name); kind && count > 0 && turns(itemBodies(kind->make({}))))
+            return true;
     return false;
 }
 

@@ -301,7 +301,8 @@ rube_cli_test("items --size without --sheet is refused" "items|--size|80x60" 2
 # --strict`: no warning (the lint runs the level headless with nothing placed and with its
 # solution), and the script reads against its level.
 file(GLOB shipped_levels CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/levels/*.toml)
-list(FILTER shipped_levels EXCLUDE REGEX "\\.solution\\.toml$")
+# A level's scripts (level_folder.hpp): NAME.solution.toml, NAME.solution.WORD.toml, NAME.wrong.WORD.toml.
+list(FILTER shipped_levels EXCLUDE REGEX "\\.(solution|wrong)(\\.[^./]+)?\\.toml$")
 list(FILTER shipped_levels EXCLUDE REGEX "/index\\.toml$") # the list of levels, not a level
 foreach(level IN LISTS shipped_levels)
   get_filename_component(stem ${level} NAME_WE)

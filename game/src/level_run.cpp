@@ -91,7 +91,10 @@ void LevelRun::addItemJoints() {
                     def.jointA = jointOf(joint.gearA, joint.gearItemA);
                     def.jointB = jointOf(joint.gearB, joint.gearItemB);
                     if (def.jointA.isNull() || def.jointB.isNull()) continue;
-                    if (joint.belt) def.ratio = -rimRadius(world_, def.jointB) / rimRadius(world_, def.jointA);
+                    if (joint.ratio != ItemJoint::Ratio::given) {
+                        const double rims = rimRadius(world_, def.jointB) / rimRadius(world_, def.jointA);
+                        def.ratio = joint.ratio == ItemJoint::Ratio::belt ? -rims : rims;
+                    }
                 } else {
                     def.a = endOf(own, joint.a);
                     def.b = endOf(own, joint.b);

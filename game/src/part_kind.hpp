@@ -95,10 +95,12 @@ struct ItemJoint {
     /// first joint of the item named in gearItemA / gearItemB (a belt between two wheels).
     int gearA = -1, gearB = -1;
     std::string gearItemA, gearItemB;
-    /// gear: a belt over the two wheels the coupled joints turn (their ends b): def.ratio is set when
-    /// the item joins the World to -r_B / r_A of their rims (a circle's radius, a body's larger half
-    /// extent), so the second turns at r_A / r_B of the first, the same way.
-    bool belt = false;
+    /// gear: where its ratio comes from. given: def.ratio. belt, mesh: from the rims (a circle's
+    /// radius, a body's larger half extent) of the two wheels the coupled joints turn (their ends b),
+    /// when the item joins the World: a belt's -r_B / r_A turns B at r_A / r_B of A the same way,
+    /// meshed teeth's r_B / r_A (teeth in proportion to the rims) the opposite way.
+    enum class Ratio : std::uint8_t { given, belt, mesh };
+    Ratio ratio = Ratio::given;
 };
 
 /// The physics bodies one item adds (circles, segments and rigid bodies, each in order), the joints

@@ -14,6 +14,7 @@ constexpr double kMarkSpacing = 0.3; // m between the marks that show the belt r
 struct BeltParams {
     std::string from, to; // the wheels' names: the first drives, the second is driven
     SourcePlace fromAt, toAt;
+    bool given = false; // both were written (a missing one is already an error of its own)
 };
 
 constexpr PartKey kKeys[] = {
@@ -39,11 +40,12 @@ public:
         p.fromAt = table.valuePlace("from");
         p.to = table.string("to", Need::required).value_or("");
         p.toAt = table.valuePlace("to");
+        p.given = table.find("from") != nullptr && table.find("to") != nullptr;
     }
     void checkReferences(const ItemDesc& item, SceneReading& reading) const override {
         const BeltParams& p = item.params.as<BeltParams>();
+        if (!p.given) return;
         for (const auto& [key, name, at] : {std::tuple{"from", &p.from, &p.fromAt}, std::tuple{"to", &p.to, &p.toAt}}) {
-            if (at->line == 0) continue; // not written: the reader has said it is required
             if (std::string message = itemReferenceError(reading.scene.level, key, *name, PartRole::wheel);
                 !message.empty())
                 reading.diag.error(*at, std::move(message));
@@ -61,7 +63,7 @@ public:
         ItemBodies bodies;
         ItemJoint belt;
         belt.def.kind = JointKind::gear;
-        belt.belt = true; // ratio -r2 / r1 from the wheels' rims when it joins the World
+        belt.ratio = ItemJoint::Ratio::belt; // -r2 / r1 from the wheels' rims when it joins the World
         belt.gearItemA = p.from;
         belt.gearItemB = p.to;
         bodies.joints.push_back(belt);

@@ -20,7 +20,8 @@ constexpr PartKey kKeys[] = {
     kNameKey,
     kPositionKey,
     {"radius", "0.2", "m"},
-    {"triggers", "required", "the name of a cannon, bomb, fan, magnet, rocket or motor, or of a [[rope]] (cut)"}};
+    {"triggers", "required",
+     "the name of a cannon, bomb, fan, magnet, rocket, motor or launcher, or of a [[rope]] (cut)"}};
 
 class SwitchKind final : public PartKind {
 public:

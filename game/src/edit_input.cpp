@@ -222,8 +222,9 @@ void EditSession::linkAtCursor() {
     for (const std::string& rope : state_.level.ropeNames)
         if (!rope.empty()) names.push_back(rope);
     if (names.empty())
-        return say("L: nothing a switch can trigger yet (a cannon, bomb, fan, magnet, rocket, motor, launcher or rope)",
-                   "magnet");
+        return say(
+            "L: nothing a switch can trigger yet (a cannon, bomb, fan, magnet, rocket, motor, launcher, glove or rope)",
+            "magnet");
     ItemDesc& item = state_.level.level.items[hit.index];
     const auto now = std::find_if(item.ownLines.begin(), item.ownLines.end(),
                                   [](const std::string& line) { return line.starts_with("triggers = "); });

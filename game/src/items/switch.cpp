@@ -21,7 +21,7 @@ constexpr PartKey kKeys[] = {
     kPositionKey,
     {"radius", "0.2", "m"},
     {"triggers", "required",
-     "the name of a cannon, bomb, fan, magnet, rocket, motor or launcher, or of a [[rope]] (cut)"}};
+     "the name of a cannon, bomb, fan, magnet, rocket, motor, launcher or glove, or of a [[rope]] (cut)"}};
 
 class SwitchKind final : public PartKind {
 public:

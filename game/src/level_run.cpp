@@ -24,6 +24,15 @@ constexpr std::uint64_t kShotMark = std::uint64_t{1} << 63;
 constexpr std::uint64_t kSceneMark = std::uint64_t{1} << 62;
 constexpr std::uint64_t kMarks = kShotMark | kSceneMark;
 
+// The rim of the wheel joint `id` turns (its end b): a circle's radius, a body's larger half extent, m.
+double rimRadius(const World& world, JointId id) {
+    const JointEnd& wheel = world.joint(id).def.b;
+    if (!wheel.circle.isNull()) return world.circle(wheel.circle).radius;
+    if (!wheel.body.isNull())
+        return std::max(world.body(wheel.body).halfExtents.x, world.body(wheel.body).halfExtents.y);
+    return 1.0;
+}
+
 } // namespace
 
 std::int64_t levelSteps(const SceneDesc& level) {
@@ -82,6 +91,10 @@ void LevelRun::addItemJoints() {
                     def.jointA = jointOf(joint.gearA, joint.gearItemA);
                     def.jointB = jointOf(joint.gearB, joint.gearItemB);
                     if (def.jointA.isNull() || def.jointB.isNull()) continue;
+                    if (joint.ratio != ItemJoint::Ratio::given) {
+                        const double rims = rimRadius(world_, def.jointB) / rimRadius(world_, def.jointA);
+                        def.ratio = joint.ratio == ItemJoint::Ratio::belt ? -rims : rims;
+                    }
                 } else {
                     def.a = endOf(own, joint.a);
                     def.b = endOf(own, joint.b);

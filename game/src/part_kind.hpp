@@ -95,6 +95,12 @@ struct ItemJoint {
     /// first joint of the item named in gearItemA / gearItemB (a belt between two wheels).
     int gearA = -1, gearB = -1;
     std::string gearItemA, gearItemB;
+    /// gear: where its ratio comes from. given: def.ratio. belt, mesh: from the rims (a circle's
+    /// radius, a body's larger half extent) of the two wheels the coupled joints turn (their ends b),
+    /// when the item joins the World: a belt's -r_B / r_A turns B at r_A / r_B of A the same way,
+    /// meshed teeth's r_B / r_A (teeth in proportion to the rims) the opposite way.
+    enum class Ratio : std::uint8_t { given, belt, mesh };
+    Ratio ratio = Ratio::given;
 };
 
 /// The physics bodies one item adds (circles, segments and rigid bodies, each in order), the joints
@@ -133,7 +139,8 @@ enum class PartRole : std::uint8_t {
     hitReport,  ///< `hit` expectations: reports the first touch of a ball
     triggered,  ///< what a switch's `triggers` may name (besides a rope)
     goalTarget, ///< a goal's `target`, counted by all-targets
-    goalBucket  ///< a goal's `bucket`
+    goalBucket, ///< a goal's `bucket`
+    wheel       ///< what a belt or a gear may name: its first joint is the axle it turns on
 };
 
 /// What a kind draws with, handed to PartKind::draw.

@@ -7,6 +7,7 @@
 
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>

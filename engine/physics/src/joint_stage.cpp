@@ -79,6 +79,7 @@ void JointStage::prepare(const StepContext& ctx, double h, const Softness& softn
         c.gearA = j.jointA;
         c.gearB = j.jointB;
         c.kickDue = false;
+        if (!j.def.motor.on()) c.motorImpulse = 0.0; // a motor switched off (World::setJointMotor) pushes no more
     }
     std::sort(circles_.begin(), circles_.end());
     circles_.erase(std::unique(circles_.begin(), circles_.end()), circles_.end());

@@ -133,6 +133,21 @@ void World::setEnabled(JointId id, bool enabled) {
     syncJoints();
 }
 
+void World::setJointMotor(JointId id, const JointMotor& motor) {
+    const HandleTable::Entry& e = tables_->joints.at(id.index, id.generation, "joint");
+    Joint& j = e.enabled ? joints_[static_cast<std::size_t>(e.slot)]
+                         : tables_->parkedJoints[static_cast<std::size_t>(id.index)];
+    if (j.def.kind != JointKind::revolute && j.def.kind != JointKind::prismatic)
+        throw std::invalid_argument("only a revolute or prismatic joint has a motor");
+    JointDef def = j.def;
+    def.motor = motor;
+    checkDef(def);
+    j.def.motor = motor;
+    // A sleeping wheel would not feel its motor: its island wakes (rigid bodies never sleep).
+    for (const JointEnd& end : {j.def.a, j.def.b})
+        if (!end.circle.isNull()) wakeCircle(circleState(end.circle));
+}
+
 bool World::jointActs(const Joint& j) const {
     const auto on = [&](const JointEnd& e) {
         return e.isWorld() || (e.circle.isNull() ? isEnabled(e.body) : isEnabled(e.circle));

@@ -167,6 +167,10 @@ public:
     void setEnabled(PivotId pivot, bool enabled);
     /// A disabled joint does not act (it also waits while an end, or a joint a gear couples, waits).
     void setEnabled(JointId joint, bool enabled);
+    /// Sets a revolute's or prismatic's motor (a switch turning a machine's motor on or off: maxForce 0
+    /// is off), waking the islands of its circles; throws std::invalid_argument for a joint of another
+    /// kind, and as addJoint does for a negative or non-finite force or speed.
+    void setJointMotor(JointId joint, const JointMotor& motor);
     /// True while the handle names something of this world (not removed, not null).
     bool isValid(CircleId id) const;
     bool isValid(SegmentId id) const; ///< as isValid(CircleId)

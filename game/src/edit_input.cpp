@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace rube::game {
 
@@ -85,6 +86,7 @@ void EditSession::moveDragged() {
 
 void EditSession::mouseButton(MouseButton button, bool pressed) {
     if (trying_) return trying_->mouseButton(button, pressed);
+    hintPicked_.reset();
     if (button == MouseButton::right && pressed) return removeAtCursor();
     if (button != MouseButton::left) return;
     if (!pressed) {
@@ -129,15 +131,9 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
 }
 
 void EditSession::typed(char32_t codePoint) {
-    if (trying_ || !hintDraft_) return;
-    if (skipTyped_) {
-        skipTyped_ = false;
-        if (codePoint == U'h' || codePoint == U'H') return;
-    }
-    // The HUD's font draws printable ASCII only.
-    if (codePoint < 32 || codePoint > 126) return;
-    *hintDraft_ += static_cast<char>(codePoint);
-    say("hint: " + *hintDraft_ + "_");
+    if (trying_ || !field_) return;
+    field_->text.typed(codePoint);
+    say(field_->text.line());
 }
 
 void EditSession::scrolled(float notches) {
@@ -268,23 +264,13 @@ void EditSession::key(Key key, KeyAction action) {
         return trying_->key(key, action);
     }
     if (action == KeyAction::release) return;
-    if (hintDraft_) {
-        // Typing a hint: only these keys act; the rest type (typed()).
-        if (key == Key::enter && action == KeyAction::press) {
-            if (!hintDraft_->empty()) {
-                edit();
-                state_.level.level.hints.push_back({*hintDraft_, {}});
-                say("hint " + std::to_string(state_.level.level.hints.size()) + " kept: " + *hintDraft_);
-            }
-            hintDraft_.reset();
-        } else if (key == Key::escape && action == KeyAction::press) {
-            hintDraft_.reset();
-            say("no hint");
-        } else if (key == Key::backspace && !hintDraft_->empty()) {
-            hintDraft_->pop_back();
-            say("hint: " + *hintDraft_ + "_");
-        }
-        return;
+    if (field_) return fieldKey(key, action);
+    // J's pick lasts one key: Enter changes that hint, Delete removes it, J picks the next.
+    const std::optional<std::size_t> hint = std::exchange(hintPicked_, std::nullopt);
+    if (hint && action == KeyAction::press) {
+        if (key == Key::enter) return changeHint(*hint);
+        if (key == Key::deleteKey || key == Key::backspace) return removeHint(*hint);
+        if (key == Key::j) return pickHint(*hint + 1);
     }
     if (key == Key::leftBracket || key == Key::rightBracket)
         return turnAtCursor(key == Key::leftBracket ? kTurnStep : -kTurnStep);
@@ -327,11 +313,8 @@ void EditSession::key(Key key, KeyAction action) {
         break;
     case Key::v: fitView(); break;
     case Key::l: linkAtCursor(); break;
-    case Key::h:
-        hintDraft_ = std::string();
-        skipTyped_ = true;
-        say("hint: _  (type it; Enter keeps it, Esc drops it)");
-        break;
+    case Key::h: addHint(); break;
+    case Key::j: pickHint(0); break;
     case Key::i: changeSpare(1); break;
     case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;

@@ -4,17 +4,20 @@
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
-/// the view to the parts; H types a hint; L links a switch to what it triggers; Space tries the level in a
+/// the view to the parts; H types a hint, J picks one to change (Enter) or remove (Delete); L links
+/// a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
 
 #include "edit_history.hpp"
+#include "edit_text_field.hpp"
 #include "inventory_bar.hpp"
 #include "level_view.hpp"
 #include "play_session.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -90,6 +93,15 @@ private:
     void changeSpare(int by);
     void fitView();
     void linkAtCursor();
+    void addHint();
+    void pickHint(std::size_t index);
+    void changeHint(std::size_t index);
+    void removeHint(std::size_t index);
+    /// Opens the bar's text field: `accept` gets the text on Enter, `next` is called on Tab (none:
+    /// Tab is ignored). `skip`: the character the opening key types.
+    void ask(std::string prompt, std::string text, char skip, std::function<void(const std::string&)> accept,
+             std::function<void()> next = {});
+    void fieldKey(render::Key key, render::KeyAction action);
     void refreshCamera();
     std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
 
@@ -107,8 +119,13 @@ private:
     std::optional<Vec2> zoneStart_;
     std::optional<std::pair<std::size_t, int>> resizing_; // a zone and its corner (0-3) being dragged
     bool control_ = false;
-    std::optional<std::string> hintDraft_; // H: the hint being typed (Enter keeps it, Esc drops it)
-    bool skipTyped_ = false;               // the 'h' that H itself types
+    struct Field {
+        TextField text;
+        std::function<void(const std::string&)> accept;
+        std::function<void()> next;
+    };
+    std::optional<Field> field_;            // the bar's text field while something is typed
+    std::optional<std::size_t> hintPicked_; // J: the hint Enter changes and Delete removes, until another key
     bool quit_ = false;
     std::string message_;
     render::Color messageColor_;

@@ -45,8 +45,10 @@ void box(std::string& out, std::string_view header, const Aabb& box) {
     line(out, "max", pair(box.max));
 }
 
-void item(std::string& out, const ItemDesc& item) {
-    out += "\n[[item]]\n";
+} // namespace
+
+std::string writeItem(const ItemDesc& item) {
+    std::string out = "[[item]]\n";
     line(out, "kind", quoted(std::string(item.kind->name())));
     if (!item.name.empty()) line(out, "name", quoted(item.name));
     line(out, "position", pair(item.position));
@@ -59,7 +61,10 @@ void item(std::string& out, const ItemDesc& item) {
         out += own;
         out += '\n';
     }
+    return out;
 }
+
+namespace {
 
 void goal(std::string& out, const Goal& goal) {
     out += "\n[goal]\n";
@@ -80,7 +85,10 @@ std::string writeLevel(const SceneDesc& scene, const std::string& header) {
     text += scene.physicsToml;
     if (scene.view) box(text, "\n[view]\n", *scene.view);
     const LevelDesc& level = scene.level;
-    for (const ItemDesc& i : level.items) item(text, i);
+    for (const ItemDesc& i : level.items) {
+        text += '\n';
+        text += writeItem(i);
+    }
     if (!level.inventory.empty()) {
         text += "\n[inventory]\n";
         for (const auto& [kind, count] : level.inventory) line(text, kind, std::to_string(count));

@@ -1,0 +1,176 @@
+// The editor's kit without a window (EditSession sees the window only as an InputListener): the
+// level's hints, loaded or typed, changed and removed; the goal's kind, target, time limit and
+// text; the [view] drawn with a drag; a part's own keys typed and checked as the reader checks them.
+// The editor in a real window, saving and replaying a level, is tests/window_play_test.cpp.
+#include "edit_session.hpp"
+#include "level_writer.hpp"
+#include "scene_file.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace rube;
+using namespace rube::game;
+using render::Key;
+using render::KeyAction;
+using render::MouseButton;
+
+namespace {
+
+constexpr render::FrameSize kFrame{640, 360};
+
+SceneDesc levelOf(const std::string& text) {
+    const SceneLoad load = parseScene(text, "kit.toml");
+    INFO((load.ok() ? std::string() : load.errors.front().format()));
+    REQUIRE(load.ok());
+    return *load.scene;
+}
+
+// A floor, two targets, a bucket, a cannon and a switch that fires it, and `extra`.
+SceneDesc bench(const std::string& extra = "") {
+    return levelOf(R"(name = "kit"
+[world]
+time_step = 0.01
+bounds = { min = [-20, -5], max = [20, 30] }
+[view]
+min = [-8, -1]
+max = [8, 8]
+[[segment]]
+a = [-8, 0]
+b = [8, 0]
+[[item]]
+kind = "target"
+name = "flag"
+position = [3, 1]
+[[item]]
+kind = "target"
+name = "pennant"
+position = [5, 1]
+[[item]]
+kind = "bucket"
+name = "pail"
+position = [-3, 0.1]
+[[item]]
+kind = "cannon"
+name = "gun"
+position = [-6, 0.6]
+speed = 10
+[[item]]
+kind = "switch"
+name = "button"
+position = [6, 0.5]
+triggers = "gun"
+)" + extra);
+}
+
+// What a hand does: keys pressed and let go, characters typed, the cursor over a world point.
+struct Hand {
+    EditSession& editor;
+    void press(Key key) {
+        editor.key(key, KeyAction::press);
+        editor.key(key, KeyAction::release);
+    }
+    void control(Key key) {
+        editor.key(Key::control, KeyAction::press);
+        press(key);
+        editor.key(Key::control, KeyAction::release);
+    }
+    // As GLFW sends it: the key's event, then its character.
+    void type(const std::string& text) {
+        for (const char c : text) editor.typed(static_cast<char32_t>(c));
+    }
+    void erase(int characters) {
+        for (int i = 0; i < characters; ++i) press(Key::backspace);
+    }
+    void at(Vec2 world) {
+        const render::Point p = editor.pixelOf(world);
+        editor.cursorMoved(p.x, p.y);
+    }
+    void drag(Vec2 from, Vec2 to) {
+        at(from);
+        editor.mouseButton(MouseButton::left, true);
+        at((from + to) * 0.5);
+        at(to);
+        editor.mouseButton(MouseButton::left, false);
+    }
+};
+
+// The level as the editor would save it, read back by the level reader.
+SceneDesc readBack(const EditSession& editor) {
+    const std::string text = writeLevel(editor.level());
+    const SceneLoad load = parseScene(text, "saved.toml");
+    INFO(text);
+    INFO((load.ok() ? std::string() : load.errors.front().format()));
+    REQUIRE(load.ok());
+    return *load.scene;
+}
+
+} // namespace
+
+TEST_CASE("the editor changes and removes a level's hints, loaded or typed, and undoes it", "[edit]") {
+    // Loaded hints count from 1 to n; each is picked with J in turn, the pick wrapping round.
+    const int loaded = GENERATE(1, 2, 3);
+    std::string hints;
+    for (int i = 1; i <= loaded; ++i) hints += "[[hint]]\ntext = \"hint number " + std::to_string(i) + "\"\n";
+    EditSession editor(bench(hints), "kit.toml", kFrame);
+    Hand hand{editor};
+    REQUIRE(editor.level().level.hints.size() == static_cast<std::size_t>(loaded));
+    for (int i = 0; i <= loaded; ++i) {
+        hand.press(Key::j);
+        const int shown = i % loaded + 1;
+        CHECK_THAT(editor.message(),
+                   Catch::StartsWith("hint " + std::to_string(shown) + " of " + std::to_string(loaded) +
+                                     ": hint number " + std::to_string(shown)));
+    }
+    // The last J picked hint 1: Enter opens it in the bar, typed over from its end.
+    hand.press(Key::enter);
+    CHECK_THAT(editor.message(), Catch::EndsWith("hint number 1_"));
+    hand.erase(8);
+    hand.type("one, changed");
+    hand.press(Key::enter);
+    REQUIRE(editor.level().level.hints.size() == static_cast<std::size_t>(loaded));
+    CHECK(editor.level().level.hints[0].text == "hint one, changed");
+
+    // J then Delete removes the last hint; Delete without a pick removes no hint.
+    for (int i = 0; i < loaded; ++i) hand.press(Key::j);
+    hand.press(Key::deleteKey);
+    CHECK(editor.level().level.hints.size() == static_cast<std::size_t>(loaded - 1));
+    hand.press(Key::deleteKey);
+    CHECK(editor.level().level.hints.size() == static_cast<std::size_t>(loaded - 1));
+    // A changed text emptied is refused (the reader refuses an empty hint); Esc leaves it as it was.
+    if (loaded > 1) {
+        hand.press(Key::j);
+        hand.press(Key::enter);
+        hand.erase(40);
+        hand.press(Key::enter);
+        CHECK_THAT(editor.message(), Catch::StartsWith("a hint's text must not be empty"));
+        hand.press(Key::j);
+        hand.press(Key::enter);
+        hand.type(" and more");
+        hand.press(Key::escape);
+        CHECK_FALSE(editor.quitRequested());
+        CHECK(editor.level().level.hints[0].text == "hint one, changed");
+    }
+    // The written level holds what is left, in order; undo brings back the removed and the old text.
+    const SceneDesc saved = readBack(editor);
+    REQUIRE(saved.level.hints.size() == static_cast<std::size_t>(loaded - 1));
+    for (int i = 1; i < loaded - 1; ++i)
+        CHECK(saved.level.hints[static_cast<std::size_t>(i)].text == "hint number " + std::to_string(i + 1));
+    hand.control(Key::z);
+    hand.control(Key::z);
+    REQUIRE(editor.level().level.hints.size() == static_cast<std::size_t>(loaded));
+    CHECK(editor.level().level.hints[0].text == "hint number 1");
+    CHECK(editor.level().level.hints.back().text == "hint number " + std::to_string(loaded));
+
+    // With no hints J says so, and H still adds one.
+    EditSession bare(bench(), "kit.toml", kFrame);
+    Hand other{bare};
+    other.press(Key::j);
+    CHECK_THAT(bare.message(), Catch::StartsWith("J: the level has no hints"));
+    other.press(Key::h);
+    other.type("hA new one");
+    other.press(Key::enter);
+    REQUIRE(bare.level().level.hints.size() == 1);
+    CHECK(bare.level().level.hints[0].text == "A new one");
+}

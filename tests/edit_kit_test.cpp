@@ -174,3 +174,92 @@ TEST_CASE("the editor changes and removes a level's hints, loaded or typed, and 
     REQUIRE(bare.level().level.hints.size() == 1);
     CHECK(bare.level().level.hints[0].text == "A new one");
 }
+
+TEST_CASE("the editor sets the goal's kind, its target or bucket, its time limit and its text", "[edit]") {
+    EditSession editor(bench(), "kit.toml", kFrame);
+    Hand hand{editor};
+    const Vec2 flag{3.0, 1.0}, pennant{5.0, 1.0}, pail{-3.0, 0.15}, gun{-6.0, 0.6};
+    // The goal as the editor holds it must be the goal the written level reads back.
+    const auto same = [&] {
+        REQUIRE(editor.level().level.goal);
+        const SceneDesc saved = readBack(editor);
+        REQUIRE(saved.level.goal);
+        const Goal& held = *editor.level().level.goal;
+        CHECK(saved.level.goal->kind == held.kind);
+        CHECK(saved.level.goal->item == held.item);
+        CHECK(saved.level.goal->text == held.text);
+        CHECK(saved.level.goal->timeLimit == held.timeLimit);
+        return held;
+    };
+    hand.press(Key::o);
+    CHECK_THAT(editor.message(), Catch::StartsWith("T sets a goal first"));
+    hand.at(gun);
+    hand.press(Key::t);
+    CHECK_FALSE(editor.level().level.goal);
+
+    // T on a target: hit it; on it again: every target; again: that target.
+    hand.at(flag);
+    hand.press(Key::t);
+    Goal goal = same();
+    CHECK(goal.kind == GoalKind::targetHit);
+    CHECK(goal.item == "flag");
+    CHECK(goal.text == "hit the flag");
+    hand.press(Key::t);
+    goal = same();
+    CHECK(goal.kind == GoalKind::allTargets);
+    CHECK(goal.text == "hit every target");
+    CHECK_THAT(editor.message(), Catch::StartsWith("goal all-targets: hit every target within 10 s"));
+    hand.press(Key::t);
+    CHECK(same().kind == GoalKind::targetHit);
+    hand.at(pail);
+    hand.press(Key::t);
+    goal = same();
+    CHECK(goal.kind == GoalKind::ballInBucket);
+    CHECK(goal.item == "pail");
+    CHECK(goal.text == "get a ball into the pail");
+
+    // The time limit: Up and Down by a second, never under one.
+    const int ups = GENERATE(0, 3, 12);
+    const int downs = GENERATE(0, 4, 15);
+    for (int i = 0; i < ups; ++i) hand.press(Key::up);
+    for (int i = 0; i < downs; ++i) hand.press(Key::down);
+    double expected = 10.0;
+    for (int i = 0; i < ups; ++i) expected += 1.0;
+    for (int i = 0; i < downs; ++i) expected = std::max(1.0, expected - 1.0);
+    CHECK(same().timeLimit == expected);
+
+    // O types the text, over the one there; T keeps a typed text when it changes the goal.
+    hand.press(Key::o);
+    hand.type("o");
+    CHECK_THAT(editor.message(), Catch::EndsWith("get a ball into the pail_"));
+    hand.erase(40);
+    hand.type("Drop a ball, into the pail!");
+    hand.press(Key::enter);
+    CHECK(same().text == "Drop a ball, into the pail!");
+    hand.at(pennant);
+    hand.press(Key::t);
+    goal = same();
+    CHECK(goal.kind == GoalKind::targetHit);
+    CHECK(goal.item == "pennant");
+    CHECK(goal.text == "Drop a ball, into the pail!");
+    CHECK(goal.timeLimit == expected);
+    hand.press(Key::o);
+    hand.erase(40);
+    hand.press(Key::enter);
+    CHECK_THAT(editor.message(), Catch::StartsWith("the goal's text must not be empty"));
+    CHECK(same().text == "Drop a ball, into the pail!");
+    hand.control(Key::z);
+    CHECK(same().item == "pail");
+
+    // Every target, then both removed: no goal is left (the reader refuses all-targets without one).
+    hand.at(flag);
+    hand.press(Key::t);
+    hand.press(Key::t);
+    CHECK(same().kind == GoalKind::allTargets);
+    hand.press(Key::deleteKey);
+    CHECK(same().kind == GoalKind::allTargets);
+    hand.at(pennant);
+    hand.press(Key::deleteKey);
+    CHECK_FALSE(editor.level().level.goal);
+    readBack(editor);
+}

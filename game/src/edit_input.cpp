@@ -170,6 +170,11 @@ void EditSession::removeAtCursor() {
     } else {
         if (level.goal && level.goal->item == level.items[hit.index].name) level.goal.reset();
         level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+        // Every target with none left is no goal (the reader refuses it).
+        if (level.goal && level.goal->kind == GoalKind::allTargets &&
+            std::none_of(level.items.begin(), level.items.end(),
+                         [](const ItemDesc& item) { return item.kind->plays(PartRole::goalTarget); }))
+            level.goal.reset();
     }
     say("removed");
 }
@@ -233,25 +238,60 @@ void EditSession::linkAtCursor() {
     say(item.name + " triggers " + names[next]);
 }
 
+namespace {
+
+// The text T gives a goal; a text typed with O is kept when T changes the goal.
+std::string goalText(const Goal& goal) {
+    switch (goal.kind) {
+    case GoalKind::targetHit: return "hit the " + goal.item;
+    case GoalKind::ballInBucket: return "get a ball into the " + goal.item;
+    case GoalKind::allTargets: return "hit every target";
+    }
+    return "";
+}
+
+const char* goalKindName(GoalKind kind) {
+    switch (kind) {
+    case GoalKind::targetHit: return "target-hit";
+    case GoalKind::ballInBucket: return "ball-in-bucket";
+    case GoalKind::allTargets: return "all-targets";
+    }
+    return "";
+}
+
+} // namespace
+
+// T on a target: hit it; T again on the goal's own target: hit every target; again: that one.
+// T on a bucket: a ball in it.
 void EditSession::goalAtCursor() {
     const Hit hit = hitAtCursor();
     if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
     const ItemDesc& item = state_.level.level.items[hit.index];
+    const std::optional<Goal>& now = state_.level.level.goal;
     Goal goal;
-    goal.timeLimit = state_.level.level.goal ? state_.level.level.goal->timeLimit : std::optional<double>(10.0);
+    goal.timeLimit = now ? now->timeLimit : std::optional<double>(10.0);
     goal.item = item.name;
     if (item.kind->plays(PartRole::goalTarget)) {
         goal.kind = GoalKind::targetHit;
-        goal.text = "hit the " + item.name;
+        if (now && now->kind == GoalKind::targetHit && now->item == item.name) {
+            goal.kind = GoalKind::allTargets;
+            goal.item.clear();
+        }
     } else if (item.kind->plays(PartRole::goalBucket)) {
         goal.kind = GoalKind::ballInBucket;
-        goal.text = "get a ball into the " + item.name;
     } else {
         return say("T: a " + std::string(item.kind->name()) + " cannot be a goal", "magnet");
     }
+    goal.text = now && now->text != goalText(*now) ? now->text : goalText(goal);
     edit();
     state_.level.level.goal = goal;
-    say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+    sayGoal();
+}
+
+void EditSession::sayGoal() {
+    const Goal& goal = *state_.level.level.goal;
+    std::string limit = goal.timeLimit ? " within " + play::number(*goal.timeLimit) + " s" : std::string();
+    say("goal " + std::string(goalKindName(goal.kind)) + ": " + goal.text + limit);
 }
 
 void EditSession::key(Key key, KeyAction action) {
@@ -308,7 +348,7 @@ void EditSession::key(Key key, KeyAction action) {
         {
             Goal& goal = *state_.level.level.goal;
             goal.timeLimit = std::max(1.0, std::round(goal.timeLimit.value_or(10.0)) + (key == Key::up ? 1.0 : -1.0));
-            say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+            sayGoal();
         }
         break;
     case Key::v: fitView(); break;
@@ -319,6 +359,7 @@ void EditSession::key(Key key, KeyAction action) {
     case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;
     case Key::t: goalAtCursor(); break;
+    case Key::o: typeGoalText(); break;
     case Key::deleteKey:
     case Key::backspace: removeAtCursor(); break;
     case Key::space: tryIt(); break;

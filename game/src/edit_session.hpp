@@ -3,7 +3,8 @@
 /// without limit, moved, turned and deleted; placement zones are drawn; a part marked as the
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
-/// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
+/// T makes the target (or bucket) under the cursor the goal (again on its target: every target),
+/// Up and Down its time limit, O types its text; V fits
 /// the view to the parts; H types a hint, J picks one to change (Enter) or remove (Delete); L links
 /// a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
@@ -89,6 +90,8 @@ private:
     void removeAtCursor();
     void markAtCursor();
     void goalAtCursor();
+    void sayGoal();
+    void typeGoalText();
     void tryIt();
     void changeSpare(int by);
     void fitView();

@@ -1,5 +1,6 @@
 // The editor's typed texts, in the bar's one-line field (edit_text_field.hpp): the level's hints
-// (H adds one; J picks one, Enter changes it, Delete removes it), loaded ones as new ones.
+// (H adds one; J picks one, Enter changes it, Delete removes it), loaded ones as new ones; the
+// goal's text (O).
 #include "edit_session.hpp"
 
 #include <utility>
@@ -82,6 +83,16 @@ void EditSession::removeHint(std::size_t index) {
     std::vector<Hint>& hints = state_.level.level.hints;
     hints.erase(hints.begin() + static_cast<std::ptrdiff_t>(index));
     say("hint " + std::to_string(index + 1) + " removed; " + std::to_string(hints.size()) + " left");
+}
+
+void EditSession::typeGoalText() {
+    if (!state_.level.level.goal) return say("T sets a goal first; then O types its text", "magnet");
+    ask("goal text: ", state_.level.level.goal->text, 'o', [this](const std::string& text) {
+        if (blank(text)) return say("the goal's text must not be empty: it is what the player is told", "magnet");
+        edit();
+        state_.level.level.goal->text = text;
+        sayGoal();
+    });
 }
 
 } // namespace rube::game

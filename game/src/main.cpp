@@ -415,13 +415,13 @@ EditCommand::EditCommand(CLI::App& app) {
                      "  zone's corner resizes it. P marks the part under the cursor as the player's: it is saved as a\n"
                      "  placement of NAME.solution.toml and counted into the inventory (P again makes it fixed); I\n"
                      "  and K add and take a spare of the kind shown. T makes the target or bucket under the cursor\n"
-                     "  the goal (10 s; Up and Down change the time limit by 1 s). V fits the view to the parts and\n"
-                     "  zones. L on a switch links it to the next part it can trigger. H types a hint (Enter keeps it, "
-                     "Esc drops it); J picks\n  the level's hints in turn: Enter changes the one shown, Delete removes "
-                     "it. Space tries the level as 'rube play' "
-                     "would, R or Esc comes back. Ctrl+Z and Ctrl+Y\n"
-                     "  undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step\n"
-                     "  as the solution's expectation. Esc quits (without saving).\n"
+                     "  the goal (10 s; T again on its target: every target); Up and Down change the time limit by\n"
+                     "  1 s; O types the goal's text. V fits the view to the parts and zones. L on a switch links it\n"
+                     "  to the next part it can trigger. H types a hint; J picks the level's hints in turn: Enter\n"
+                     "  changes the one shown, Delete removes it. Text is typed in the bar: Enter keeps it, Esc\n"
+                     "  drops it. Space tries the level as 'rube play' would, R or Esc comes back. Ctrl+Z and\n"
+                     "  Ctrl+Y undo and redo; Ctrl+S saves the level and NAME.solution.toml beside it, with the\n"
+                     "  goal's step as the solution's expectation. Esc quits (without saving).\n"
                      "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
     command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
         ->type_name("LEVEL");

@@ -96,6 +96,8 @@ struct Hand {
     }
 };
 
+bool sameBox(const Aabb& a, const Aabb& b) { return a.min == b.min && a.max == b.max; }
+
 // The level as the editor would save it, read back by the level reader.
 SceneDesc readBack(const EditSession& editor) {
     const std::string text = writeLevel(editor.level());
@@ -262,4 +264,67 @@ TEST_CASE("the editor sets the goal's kind, its target or bucket, its time limit
     hand.press(Key::deleteKey);
     CHECK_FALSE(editor.level().level.goal);
     readBack(editor);
+}
+
+TEST_CASE("the editor's view: C shows more of the world and a drag sets the level's [view] anywhere", "[edit]") {
+    EditSession editor(bench(), "kit.toml", kFrame);
+    Hand hand{editor};
+    const Aabb before = *editor.level().view;
+    // How wide a box is drawn, in pixels.
+    const auto pixelWidth = [&](const Aabb& box) { return editor.pixelOf(box.max).x - editor.pixelOf(box.min).x; };
+    // The camera shows the level's view: the whole of it in the level area, touching two edges.
+    const auto shown = [&](const Aabb& view) {
+        const render::Point a = editor.pixelOf({view.min.x, view.max.y}); // top left
+        const render::Point b = editor.pixelOf({view.max.x, view.min.y}); // bottom right
+        const float w = static_cast<float>(kFrame.width), h = static_cast<float>(kFrame.height);
+        const bool inside = a.x >= -1.0f && a.y >= -1.0f && b.x <= w + 1.0f && b.y <= h + 1.0f;
+        const bool fills = (std::abs(a.x) <= 1.0f && std::abs(b.x - w) <= 1.0f) ||
+                           (std::abs(a.y) <= 1.0f && std::abs(b.y - h) <= 1.0f);
+        return inside && fills;
+    };
+    REQUIRE(shown(before));
+    const float widthBefore = pixelWidth(before);
+
+    // C: three times the width around it, the view outlined; the wheel zooms out and back in.
+    hand.press(Key::c);
+    REQUIRE(editor.drawingView());
+    CHECK(pixelWidth(before) == Approx(widthBefore / 3.0f).epsilon(1e-4));
+    const int notches = GENERATE(1, 2, 3);
+    editor.scrolled(static_cast<float>(-notches));
+    CHECK(pixelWidth(before) ==
+          Approx(widthBefore / 3.0f / std::pow(1.25f, static_cast<float>(notches))).epsilon(1e-4));
+    editor.scrolled(static_cast<float>(notches));
+    CHECK(pixelWidth(before) == Approx(widthBefore / 3.0f).epsilon(1e-4));
+    // C again: nothing changed, the camera back on the view.
+    hand.press(Key::c);
+    CHECK_FALSE(editor.drawingView());
+    CHECK(sameBox(*editor.level().view, before));
+    CHECK(shown(before));
+
+    // Drags, either way round, inside the old view, across it and wholly outside it.
+    const auto [from, to] = GENERATE(std::pair{Vec2{-12.0, -2.0}, Vec2{12.0, 14.0}},
+                                     std::pair{Vec2{6.0, 4.0}, Vec2{2.0, 1.0}},
+                                     std::pair{Vec2{-15.5, 3.0}, Vec2{-9.0, 9.5}});
+    hand.press(Key::c);
+    hand.drag(from, to);
+    CHECK_FALSE(editor.drawingView());
+    const Aabb view{{std::min(from.x, to.x), std::min(from.y, to.y)}, {std::max(from.x, to.x), std::max(from.y, to.y)}};
+    REQUIRE(editor.level().view);
+    CHECK(sameBox(*editor.level().view, view));
+    CHECK(shown(view));
+    CHECK_THAT(editor.message(), Catch::StartsWith("view [" + scriptNumber(view.min.x)));
+    const SceneDesc saved = readBack(editor);
+    REQUIRE(saved.view);
+    CHECK(sameBox(*saved.view, view));
+    // Undone: the view as it was, and the camera on it.
+    hand.control(Key::z);
+    CHECK(sameBox(*editor.level().view, before));
+    CHECK(shown(before));
+
+    // A click or a drag under a metre sets no view; the view stays being drawn.
+    hand.press(Key::c);
+    hand.drag({1.0, 1.0}, {1.5, 5.0});
+    CHECK_THAT(editor.message(), Catch::StartsWith("a view is at least 1 m each way"));
+    CHECK(sameBox(*editor.level().view, before));
+    CHECK(editor.drawingView());
 }

@@ -24,6 +24,8 @@ using render::MouseButton;
 constexpr double kGridPerMetre = 20.0; // 5 cm, as the play window's grid
 constexpr double kTurnStep = 15.0;     // degrees
 constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
+constexpr double kSmallestView = 1.0;  // m: nor a view
+constexpr double kZoomStep = 1.25;     // C's wider window, per notch of the wheel
 
 Vec2 snapped(Vec2 v) { return {snap(v.x, kGridPerMetre), snap(v.y, kGridPerMetre)}; }
 
@@ -95,7 +97,10 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
             const Aabb box{{std::min(zoneStart_->x, end.x), std::min(zoneStart_->y, end.y)},
                            {std::max(zoneStart_->x, end.x), std::max(zoneStart_->y, end.y)}};
             zoneStart_.reset();
-            if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
+            if (viewMode_) {
+                if (box.max.x - box.min.x >= kSmallestView && box.max.y - box.min.y >= kSmallestView) setView(box);
+                else say("a view is at least 1 m each way: drag a bigger one", "magnet");
+            } else if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
                 edit();
                 state_.level.level.zones.push_back({box, {}});
                 say("zone " + formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y));
@@ -106,6 +111,10 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
         return;
     }
     if (bar_.contains(cursor_)) return;
+    if (viewMode_) {
+        zoneStart_ = snapped(cursorWorld_);
+        return;
+    }
     if (zoneMode_) {
         // On a zone's corner, a drag resizes the zone; elsewhere it draws a new one.
         if ((resizing_ = zoneCornerAtCursor())) edit();
@@ -138,6 +147,13 @@ void EditSession::typed(char32_t codePoint) {
 
 void EditSession::scrolled(float notches) {
     if (trying_) return trying_->scrolled(notches);
+    if (viewMode_) {
+        // Away from the user zooms in, as maps do.
+        const Vec2 centre = (wideView_.min + wideView_.max) * 0.5;
+        const Vec2 half = (wideView_.max - wideView_.min) * (0.5 * std::pow(kZoomStep, -notches));
+        wideView_ = {centre - half, centre + half};
+        return refreshCamera();
+    }
     if (const int clicks = static_cast<int>(std::lround(notches)); clicks != 0) turnAtCursor(clicks * kTurnStep);
 }
 
@@ -325,6 +341,7 @@ void EditSession::key(Key key, KeyAction action) {
             refreshCamera();
             say("undone");
         } else if (!control_) {
+            if (std::exchange(viewMode_, false)) refreshCamera();
             zoneMode_ = !zoneMode_;
             say(zoneMode_ ? "zones: drag to draw a placement zone, Z again to place parts" : "placing parts");
         }
@@ -352,6 +369,7 @@ void EditSession::key(Key key, KeyAction action) {
         }
         break;
     case Key::v: fitView(); break;
+    case Key::c: toggleViewMode(); break;
     case Key::l: linkAtCursor(); break;
     case Key::h: addHint(); break;
     case Key::j: pickHint(0); break;

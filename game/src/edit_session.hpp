@@ -5,8 +5,8 @@
 /// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal (again on its target: every target),
 /// Up and Down its time limit, O types its text; V fits
-/// the view to the parts; H types a hint, J picks one to change (Enter) or remove (Delete); L links
-/// a switch to what it triggers; Space tries the level in a
+/// the view to the parts, C shows more of the world to drag a view anywhere (the wheel zooms); H types a hint, J picks
+/// one to change (Enter) or remove (Delete); L links a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
@@ -55,6 +55,8 @@ public:
 
     /// The kind a click places (Tab cycles through every kind).
     ItemKind selectedKind() const { return allPartKinds()[selected_]; }
+    /// True while C's drag draws the level's view over a wider part of the world.
+    bool drawingView() const { return viewMode_; }
     /// The level as it stands (the fixed parts; the player's are in playerParts()).
     const SceneDesc& level() const { return state_.level; }
     /// The parts marked as the player's, as placements.
@@ -95,6 +97,8 @@ private:
     void tryIt();
     void changeSpare(int by);
     void fitView();
+    void toggleViewMode();
+    void setView(const Aabb& box);
     void linkAtCursor();
     void addHint();
     void pickHint(std::size_t index);
@@ -119,7 +123,9 @@ private:
     std::optional<Hit> dragging_; // an item or player's part being moved
     Vec2 dragOffset_;             // from the cursor to the dragged part's position
     bool zoneMode_ = false;       // Z: a drag draws a zone
-    std::optional<Vec2> zoneStart_;
+    bool viewMode_ = false;       // C: a drag draws the level's [view], over a wider part of the world
+    Aabb wideView_;               // what the window shows meanwhile
+    std::optional<Vec2> zoneStart_;                       // where a drag drawing a zone (or the view) began
     std::optional<std::pair<std::size_t, int>> resizing_; // a zone and its corner (0-3) being dragged
     bool control_ = false;
     struct Field {

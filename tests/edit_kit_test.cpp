@@ -8,7 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <string>
+#include <tuple>
 
 using namespace rube;
 using namespace rube::game;
@@ -327,4 +331,169 @@ TEST_CASE("the editor's view: C shows more of the world and a drag sets the leve
     CHECK_THAT(editor.message(), Catch::StartsWith("a view is at least 1 m each way"));
     CHECK(sameBox(*editor.level().view, before));
     CHECK(editor.drawingView());
+}
+
+namespace {
+
+// A part's own keys, as the editor offers them: the descriptor's, but kind, name, position, angle.
+std::vector<std::string> ownKeysOf(ItemKind kind) {
+    std::vector<std::string> keys;
+    for (const PartKey& key : kind->keys())
+        if (key.key != "kind" && key.key != "name" && key.key != "position" && key.key != "angle")
+            keys.emplace_back(key.key);
+    return keys;
+}
+
+void choose(EditSession& editor, Hand& hand, ItemKind kind) {
+    for (std::size_t i = 0; i < allPartKinds().size() && editor.selectedKind() != kind; ++i) hand.press(Key::tab);
+    REQUIRE(editor.selectedKind() == kind);
+}
+
+// E as GLFW sends it: the key, then the 'e' it types (which the field does not take).
+void pressE(Hand& hand) {
+    hand.press(Key::e);
+    hand.editor.typed(U'e');
+}
+
+// Types `text` for the key shown, over what the field holds.
+void retype(Hand& hand, const std::string& text) {
+    hand.erase(40);
+    hand.type(text);
+}
+
+// The reader's message for `item` of `level` with `line` among its keys (replacing the key's line).
+std::string readerSays(SceneDesc level, const std::string& item, const std::string& line) {
+    ItemDesc& changed = level.level.items[static_cast<std::size_t>(level.level.find(item))];
+    const std::string key = line.substr(0, line.find(" = ") + 3);
+    std::erase_if(changed.ownLines, [&](const std::string& own) { return own.starts_with(key); });
+    changed.ownLines.push_back(line);
+    const SceneLoad load = parseScene(writeLevel(level), "kit.toml");
+    REQUIRE_FALSE(load.ok());
+    return load.errors.front().message;
+}
+
+} // namespace
+
+TEST_CASE("E offers every kind's own keys from its descriptor, in its order, Tab going round", "[edit]") {
+    for (ItemKind kind : allPartKinds()) {
+        INFO(kind->name());
+        EditSession editor(bench(), "kit.toml", kFrame);
+        Hand hand{editor};
+        choose(editor, hand, kind);
+        hand.at({0.0, 5.0});
+        editor.mouseButton(MouseButton::left, true);
+        editor.mouseButton(MouseButton::left, false);
+        const ItemDesc placed = editor.level().level.items.back();
+        REQUIRE(placed.kind == kind);
+        const std::vector<std::string> keys = ownKeysOf(kind);
+        pressE(hand);
+        if (keys.empty()) {
+            CHECK_THAT(editor.message(), Catch::EndsWith("has no keys of its own"));
+            continue;
+        }
+        for (std::size_t i = 0; i <= keys.size(); ++i) {
+            CHECK_THAT(editor.message(), Catch::StartsWith(placed.name + " " + keys[i % keys.size()] + " ("));
+            CHECK_THAT(editor.message(), Catch::EndsWith("_"));
+            hand.press(Key::tab);
+        }
+        hand.press(Key::escape);
+        CHECK(editor.level().level.items.back().ownLines == placed.ownLines);
+        CHECK_FALSE(editor.quitRequested());
+    }
+}
+
+TEST_CASE("E sets a part's own keys, which the part then has, and the reader's refusals are shown", "[edit]") {
+    EditSession editor(bench(), "kit.toml", kFrame);
+    Hand hand{editor};
+    const Vec2 gun{-6.0, 0.6};
+    const auto item = [&](const std::string& name) {
+        const int i = editor.level().level.find(name);
+        REQUIRE(i >= 0);
+        return editor.level().level.items[static_cast<std::size_t>(i)];
+    };
+
+    SECTION("a cannon's speed is its shots' muzzle speed") {
+        const double speed = GENERATE(0.5, 3.0, 8.5, 12.25, 40.0);
+        hand.at(gun);
+        pressE(hand);
+        CHECK_THAT(editor.message(), Catch::StartsWith("gun speed (8; muzzle speed, m/s): 10_"));
+        retype(hand, scriptNumber(speed));
+        hand.press(Key::enter);
+        CHECK(editor.message() == "gun: speed = " + scriptNumber(speed));
+        CHECK(item("gun").kind->muzzleSpeed(item("gun")) == speed);
+        const SceneDesc saved = readBack(editor);
+        const ItemDesc& read = saved.level.items[static_cast<std::size_t>(saved.level.find("gun"))];
+        CHECK(read.kind->muzzleSpeed(read) == speed);
+        // Nothing typed: back to the kind's default (8 m/s); undone, the speed typed.
+        hand.at(gun);
+        pressE(hand);
+        hand.erase(40);
+        hand.press(Key::enter);
+        CHECK(item("gun").kind->muzzleSpeed(item("gun")) == 8.0);
+        hand.control(Key::z);
+        CHECK(item("gun").kind->muzzleSpeed(item("gun")) == speed);
+    }
+
+    SECTION("a plank's length is its board's, at any tilt") {
+        const double length = GENERATE(0.5, 1.25, 3.0, 6.0);
+        const int turns = GENERATE(0, 1, 5);
+        choose(editor, hand, partKind("plank"));
+        hand.at({0.0, 5.0});
+        editor.mouseButton(MouseButton::left, true);
+        editor.mouseButton(MouseButton::left, false);
+        for (int i = 0; i < turns; ++i) hand.press(Key::leftBracket);
+        pressE(hand);
+        retype(hand, scriptNumber(length));
+        hand.press(Key::enter);
+        const ItemDesc plank = item("plank1");
+        const ItemBodies bodies = itemBodies(plank);
+        REQUIRE(bodies.segments.size() == 1);
+        const Vec2 along = bodies.segments[0].b - bodies.segments[0].a;
+        CHECK(along.length() == Approx(length).epsilon(1e-12));
+        CHECK(std::atan2(along.y, along.x) * 180.0 / std::numbers::pi == Approx(15.0 * turns).margin(1e-9));
+        CHECK(readBack(editor).level.items.size() == editor.level().level.items.size());
+    }
+
+    SECTION("a bomb's timer and its fuse are set together: Tab keeps what is typed") {
+        const double fuse = GENERATE(0.0, 1.5, 7.0);
+        choose(editor, hand, partKind("bomb"));
+        hand.at({0.0, 5.0});
+        editor.mouseButton(MouseButton::left, true);
+        editor.mouseButton(MouseButton::left, false);
+        pressE(hand);
+        hand.press(Key::tab); // blast_radius
+        hand.press(Key::tab); // strength
+        hand.press(Key::tab); // trigger
+        CHECK_THAT(editor.message(), Catch::StartsWith("bomb1 trigger (impact;"));
+        hand.type("timer");
+        hand.press(Key::tab);
+        CHECK_THAT(editor.message(), Catch::StartsWith("bomb1 fuse ("));
+        hand.type(scriptNumber(fuse));
+        hand.press(Key::enter);
+        CHECK(editor.message() == "bomb1: trigger = 'timer', fuse = " + scriptNumber(fuse));
+        const SceneDesc saved = readBack(editor);
+        const ItemDesc& bomb = saved.level.items[static_cast<std::size_t>(saved.level.find("bomb1"))];
+        std::vector<std::string> lines = bomb.ownLines;
+        std::sort(lines.begin(), lines.end());
+        CHECK(lines == std::vector<std::string>{"fuse = " + scriptNumber(fuse), "trigger = 'timer'"});
+    }
+
+    SECTION("what the reader refuses is refused with its message, and nothing changes") {
+        const auto [name, index, typed, line] = GENERATE(
+            std::tuple{"gun", 0, "-1", "speed = -1"}, std::tuple{"gun", 0, "fast", "speed = 'fast'"},
+            std::tuple{"gun", 1, "plank", "ammo = 'plank'"}, std::tuple{"gun", 2, "-2", "fire_at = -2"},
+            std::tuple{"button", 0, "0", "radius = 0"}, std::tuple{"button", 1, "nowhere", "triggers = 'nowhere'"},
+            std::tuple{"button", 1, "flag", "triggers = 'flag'"}, std::tuple{"pail", 0, "1e9", "width = 1e9"});
+        const SceneDesc before = editor.level();
+        const std::size_t undoable = editor.undoable();
+        const ItemDesc& target = before.level.items[static_cast<std::size_t>(before.level.find(name))];
+        hand.at(target.kind->plays(PartRole::goalBucket) ? target.position + Vec2{0.0, 0.05} : target.position);
+        pressE(hand);
+        for (int i = 0; i < index; ++i) hand.press(Key::tab);
+        retype(hand, typed);
+        hand.press(Key::enter);
+        CHECK(editor.message() == "refused: " + readerSays(before, name, line));
+        CHECK(item(name).ownLines == target.ownLines);
+        CHECK(editor.undoable() == undoable);
+    }
 }

@@ -247,11 +247,9 @@ void EditSession::linkAtCursor() {
     if (now != item.ownLines.end())
         for (std::size_t i = 0; i < names.size(); ++i)
             if (*now == "triggers = " + tomlQuoted(names[i])) next = (i + 1) % names.size();
-    edit();
-    // The switch's own parameters are read when the level is saved or tried: its line is what counts.
-    std::erase_if(item.ownLines, [](const std::string& line) { return line.starts_with("triggers = "); });
-    state_.level.level.items[hit.index].ownLines.push_back("triggers = " + tomlQuoted(names[next]));
-    say(item.name + " triggers " + names[next]);
+    // As E would set it: read by the level reader before it counts.
+    if (const std::string name = item.name; setKeys(hit.index, {{"triggers", tomlQuoted(names[next])}}))
+        say(name + " triggers " + names[next]);
 }
 
 namespace {
@@ -378,6 +376,7 @@ void EditSession::key(Key key, KeyAction action) {
     case Key::p: markAtCursor(); break;
     case Key::t: goalAtCursor(); break;
     case Key::o: typeGoalText(); break;
+    case Key::e: editKeysAtCursor(); break;
     case Key::deleteKey:
     case Key::backspace: removeAtCursor(); break;
     case Key::space: tryIt(); break;

@@ -5,7 +5,8 @@
 /// with spares (I, K);
 /// T makes the target (or bucket) under the cursor the goal (again on its target: every target),
 /// Up and Down its time limit, O types its text; V fits
-/// the view to the parts, C shows more of the world to drag a view anywhere (the wheel zooms); H types a hint, J picks
+/// the view to the parts, C shows more of the world to drag a view anywhere (the wheel zooms); E
+/// types a part's own keys (a plank's length, a cannon's speed), checked by the level reader; H types a hint, J picks
 /// one to change (Enter) or remove (Delete); L links a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
@@ -94,6 +95,13 @@ private:
     void goalAtCursor();
     void sayGoal();
     void typeGoalText();
+    void editKeysAtCursor();
+    /// Keys of a part and what was typed for each (TOML values, or words taken as strings).
+    using KeyValues = std::vector<std::pair<std::string_view, std::string>>;
+    void editKey(std::size_t index, std::size_t keyIndex, char skip, KeyValues typed);
+    /// Sets fixed item `index`'s own keys to what was typed ("" puts a key back to its default).
+    /// False, with the level reader's message on the bar, when the item would not read so.
+    bool setKeys(std::size_t index, const KeyValues& values);
     void tryIt();
     void changeSpare(int by);
     void fitView();
@@ -104,10 +112,10 @@ private:
     void pickHint(std::size_t index);
     void changeHint(std::size_t index);
     void removeHint(std::size_t index);
-    /// Opens the bar's text field: `accept` gets the text on Enter, `next` is called on Tab (none:
+    /// Opens the bar's text field: `accept` gets the text on Enter, `next` gets it on Tab (none:
     /// Tab is ignored). `skip`: the character the opening key types.
     void ask(std::string prompt, std::string text, char skip, std::function<void(const std::string&)> accept,
-             std::function<void()> next = {});
+             std::function<void(const std::string&)> next = {});
     void fieldKey(render::Key key, render::KeyAction action);
     void refreshCamera();
     std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
@@ -131,7 +139,7 @@ private:
     struct Field {
         TextField text;
         std::function<void(const std::string&)> accept;
-        std::function<void()> next;
+        std::function<void(const std::string&)> next; // Tab, with what is typed
     };
     std::optional<Field> field_;            // the bar's text field while something is typed
     std::optional<std::size_t> hintPicked_; // J: the hint Enter changes and Delete removes, until another key

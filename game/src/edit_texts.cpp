@@ -1,8 +1,14 @@
 // The editor's typed texts, in the bar's one-line field (edit_text_field.hpp): the level's hints
 // (H adds one; J picks one, Enter changes it, Delete removes it), loaded ones as new ones; the
-// goal's text (O).
+// goal's text (O); a part's own keys (E), read by the level reader's own code before they count.
 #include "edit_session.hpp"
 
+#include "level_writer.hpp"
+#include "scene_file.hpp"
+#include "toml_reader.hpp"
+#include "toml_writer.hpp"
+
+#include <algorithm>
 #include <utility>
 
 namespace rube::game {
@@ -11,7 +17,7 @@ using render::Key;
 using render::KeyAction;
 
 void EditSession::ask(std::string prompt, std::string text, char skip, std::function<void(const std::string&)> accept,
-                      std::function<void()> next) {
+                      std::function<void(const std::string&)> next) {
     field_ = Field{TextField(std::move(prompt), std::move(text), skip), std::move(accept), std::move(next)};
     say(field_->text.line());
 }
@@ -33,7 +39,7 @@ void EditSession::fieldKey(Key key, KeyAction action) {
     case TextField::Outcome::next:
         if (Field done = std::move(*field_); done.next) {
             field_.reset();
-            done.next();
+            done.next(done.text.text());
         } else {
             field_ = std::move(done);
         }
@@ -93,6 +99,109 @@ void EditSession::typeGoalText() {
         state_.level.level.goal->text = text;
         sayGoal();
     });
+}
+
+namespace {
+
+// A part's own keys: its descriptor's, but for those every item has and the angle [ ] turns.
+std::vector<PartKey> ownKeys(ItemKind kind) {
+    std::vector<PartKey> keys;
+    for (const PartKey& key : kind->keys())
+        if (key.key != kKindKey.key && key.key != kNameKey.key && key.key != kPositionKey.key && key.key != "angle")
+            keys.push_back(key);
+    return keys;
+}
+
+std::string linePrefix(std::string_view key) { return std::string(key) + " = "; }
+
+// The value the file gives `key` (as TOML text), or "" when it is left at its default.
+std::string valueOf(const ItemDesc& item, std::string_view key) {
+    for (const std::string& line : item.ownLines)
+        if (line.starts_with(linePrefix(key))) return line.substr(linePrefix(key).size());
+    return "";
+}
+
+// What is typed is a TOML value (12, true, 'gun'); anything else is a string, so a name or a word
+// (impact) needs no quotes. The reader then says whether it is of the right type.
+std::string tomlOrText(const std::string& text) {
+    Diagnostics ignored("typed");
+    if (const auto table = parseToml("value = " + text, "typed", ignored); table && table->size() == 1) return text;
+    return tomlQuoted(text);
+}
+
+std::string trimmed(const std::string& text) {
+    const auto first = text.find_first_not_of(' ');
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(' ') - first + 1);
+}
+
+} // namespace
+
+// E over a fixed part: its own keys one at a time in the bar. Tab keeps what is typed and goes to
+// the next key; Enter sets them all at once (a bomb's trigger 'timer' needs its fuse with it).
+void EditSession::editKeysAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what == Hit::What::player)
+        return say("E: the player's parts have their kind's defaults (P makes it fixed again)", "magnet");
+    if (hit.what != Hit::What::item) return say("E: point at a part to set its keys", "magnet");
+    editKey(hit.index, 0, 'e', {});
+}
+
+void EditSession::editKey(std::size_t index, std::size_t keyIndex, char skip, KeyValues typed) {
+    const ItemDesc& item = state_.level.level.items[index];
+    const std::vector<PartKey> keys = ownKeys(item.kind);
+    if (keys.empty()) return say("a " + std::string(item.kind->name()) + " has no keys of its own", "magnet");
+    const PartKey key = keys[keyIndex % keys.size()];
+    const auto was = std::find_if(typed.begin(), typed.end(), [&](const auto& kv) { return kv.first == key.key; });
+    const std::string now = was != typed.end() ? was->second : valueOf(item, key.key);
+    const std::string who = item.name.empty() ? std::string(item.kind->name()) : item.name;
+    // What is typed for this key replaces what was typed before for it.
+    const auto with = [key, typed](const std::string& text) {
+        KeyValues all = typed;
+        std::erase_if(all, [&](const auto& kv) { return kv.first == key.key; });
+        all.emplace_back(key.key, text);
+        return all;
+    };
+    ask(
+        who + " " + std::string(key.key) + " (" + std::string(key.value) + "; " + std::string(key.doc) + "): ", now,
+        skip, [this, index, with](const std::string& text) { setKeys(index, with(text)); },
+        [this, index, keyIndex, with](const std::string& text) { editKey(index, keyIndex + 1, 0, with(text)); });
+}
+
+// Nothing typed puts a key back to its default. The changed item must read as the level reader
+// reads it, among the level's other items; else the reader's message is shown and nothing changes.
+bool EditSession::setKeys(std::size_t index, const KeyValues& values) {
+    ItemDesc changed = state_.level.level.items[index];
+    for (const auto& [key, text] : values) {
+        const std::string value = trimmed(text);
+        const auto line = std::find_if(changed.ownLines.begin(), changed.ownLines.end(),
+                                       [&](const std::string& own) { return own.starts_with(linePrefix(key)); });
+        if (value.empty() && line != changed.ownLines.end()) changed.ownLines.erase(line);
+        else if (!value.empty() && line != changed.ownLines.end()) *line = linePrefix(key) + tomlOrText(value);
+        else if (!value.empty()) changed.ownLines.push_back(linePrefix(key) + tomlOrText(value));
+    }
+    const ItemLoad load = readItemAgain(state_.level, index, writeItem(changed));
+    if (!load.item) {
+        say("refused: " + load.errors.front().message, "magnet");
+        return false;
+    }
+    ItemDesc& item = state_.level.level.items[index];
+    // What the bar says: the keys whose value changed (Tab passes others by as they were).
+    std::string said = (item.name.empty() ? std::string(item.kind->name()) : item.name) + ":";
+    for (const auto& [key, text] : values)
+        if (const std::string value = valueOf(*load.item, key); value != valueOf(item, key))
+            said += (said.back() == ':' ? " " : ", ") + std::string(key) +
+                    (value.empty() ? " at its default" : " = " + value);
+    if (said.back() == ':') {
+        say(said + " nothing changed");
+        return true;
+    }
+    edit();
+    const SourcePlace place = item.place;
+    item = *load.item;
+    item.place = place;
+    say(said);
+    return true;
 }
 
 } // namespace rube::game

@@ -4,6 +4,7 @@
 // The editor in a real window, saving and replaying a level, is tests/window_play_test.cpp.
 #include "edit_session.hpp"
 #include "level_writer.hpp"
+#include "play_helpers.hpp"
 #include "scene_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -31,18 +32,10 @@ SceneDesc levelOf(const std::string& text) {
     return *load.scene;
 }
 
-// A floor, two targets, a bucket, a cannon and a switch that fires it, and `extra`.
+// The play tests' bench (a floor, the view, the cannon "gun"), two targets, a bucket, a switch that
+// fires the gun, and `extra`.
 SceneDesc bench(const std::string& extra = "") {
-    return levelOf(R"(name = "kit"
-[world]
-time_step = 0.01
-bounds = { min = [-20, -5], max = [20, 30] }
-[view]
-min = [-8, -1]
-max = [8, 8]
-[[segment]]
-a = [-8, 0]
-b = [8, 0]
+    return levelOf("name = \"kit\"" + std::string(play_test::kTestBench) + R"(
 [[item]]
 kind = "target"
 name = "flag"
@@ -55,11 +48,6 @@ position = [5, 1]
 kind = "bucket"
 name = "pail"
 position = [-3, 0.1]
-[[item]]
-kind = "cannon"
-name = "gun"
-position = [-6, 0.6]
-speed = 10
 [[item]]
 kind = "switch"
 name = "button"

@@ -264,15 +264,6 @@ std::string goalText(const Goal& goal) {
     return "";
 }
 
-const char* goalKindName(GoalKind kind) {
-    switch (kind) {
-    case GoalKind::targetHit: return "target-hit";
-    case GoalKind::ballInBucket: return "ball-in-bucket";
-    case GoalKind::allTargets: return "all-targets";
-    }
-    return "";
-}
-
 } // namespace
 
 // T on a target: hit it; T again on the goal's own target: hit every target; again: that one.
@@ -305,7 +296,7 @@ void EditSession::goalAtCursor() {
 void EditSession::sayGoal() {
     const Goal& goal = *state_.level.level.goal;
     std::string limit = goal.timeLimit ? " within " + play::number(*goal.timeLimit) + " s" : std::string();
-    say("goal " + std::string(goalKindName(goal.kind)) + ": " + goal.text + limit);
+    say("goal " + std::string(conditionName(goal.kind)) + ": " + goal.text + limit);
 }
 
 void EditSession::key(Key key, KeyAction action) {

@@ -153,6 +153,8 @@ void readGoal(TableReader& root, SceneReading& reading) {
 
 } // namespace
 
+std::string_view conditionName(GoalKind kind) { return kConditionNames[static_cast<std::size_t>(kind)]; }
+
 std::string readBodyName(TableReader& table, SceneReading& reading, Need need) {
     const auto name = table.string("name", need);
     if (!name) return "";

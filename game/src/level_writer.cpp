@@ -12,15 +12,6 @@ namespace rube::game {
 
 namespace {
 
-const char* conditionName(GoalKind kind) {
-    switch (kind) {
-    case GoalKind::targetHit: return "target-hit";
-    case GoalKind::ballInBucket: return "ball-in-bucket";
-    case GoalKind::allTargets: return "all-targets";
-    }
-    return "";
-}
-
 std::string quoted(const std::string& text) { return tomlQuoted(text); }
 
 // Strings are built by appending: GCC 12 warns (-Wrestrict, wrongly) at "literal" + std::string.
@@ -69,7 +60,7 @@ namespace {
 void goal(std::string& out, const Goal& goal) {
     out += "\n[goal]\n";
     line(out, "text", quoted(goal.text));
-    line(out, "condition", quoted(conditionName(goal.kind)));
+    line(out, "condition", quoted(std::string(conditionName(goal.kind))));
     if (goal.kind == GoalKind::targetHit) line(out, "target", quoted(goal.item));
     if (goal.kind == GoalKind::ballInBucket) line(out, "bucket", quoted(goal.item));
     if (goal.timeLimit) line(out, "time_limit", scriptNumber(*goal.timeLimit));

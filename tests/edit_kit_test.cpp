@@ -440,6 +440,14 @@ TEST_CASE("E sets a part's own keys, which the part then has, and the reader's r
         CHECK(along.length() == Approx(length).epsilon(1e-12));
         CHECK(std::atan2(along.y, along.x) * 180.0 / std::numbers::pi == Approx(15.0 * turns).margin(1e-9));
         CHECK(readBack(editor).level.items.size() == editor.level().level.items.size());
+        // Made the player's, it is the inventory's plank, at its kind's length, and the bar says so.
+        hand.at({0.0, 5.0});
+        hand.press(Key::p);
+        REQUIRE(editor.playerParts().size() == 1);
+        CHECK_THAT(editor.message(), Catch::EndsWith("(at its kind's defaults: its own keys are dropped)"));
+        CHECK(itemBodies(placedItem(editor.playerParts()[0]))
+                  .segments[0]
+                  .a.distance(itemBodies(placedItem(editor.playerParts()[0])).segments[0].b) == Approx(2.0));
     }
 
     SECTION("a bomb's timer and its fuse are set together: Tab keeps what is typed") {

@@ -219,10 +219,14 @@ void EditSession::markAtCursor() {
     p.angleDegrees = item.angleDegrees.value_or(0.0);
     p.angle = scriptRadians(p.angleDegrees);
     p.name = item.name;
+    // The player's parts are the inventory's, at their kind's defaults: keys set with E are not
+    // kept, and the bar says so rather than lose them unseen.
+    const bool dropped = !item.ownLines.empty();
     state_.players.push_back(p);
     if (level.goal && level.goal->item == item.name) level.goal.reset();
     level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
-    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
+    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution" +
+        (dropped ? " (at its kind's defaults: its own keys are dropped)" : ""));
 }
 
 // L on a switch: its `triggers` goes to the next item it may trigger (or named rope), in level order.

@@ -6,6 +6,7 @@
 #include "level_writer.hpp"
 #include "play_helpers.hpp"
 #include "scene_file.hpp"
+#include "script_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -440,14 +441,49 @@ TEST_CASE("E sets a part's own keys, which the part then has, and the reader's r
         CHECK(along.length() == Approx(length).epsilon(1e-12));
         CHECK(std::atan2(along.y, along.x) * 180.0 / std::numbers::pi == Approx(15.0 * turns).margin(1e-9));
         CHECK(readBack(editor).level.items.size() == editor.level().level.items.size());
-        // Made the player's, it is the inventory's plank, at its kind's length, and the bar says so.
+        // Made the player's, it keeps its length: the solution's [[place]] gives it, as a script
+        // may, and the placement read back from it is as long.
+        const auto boardLength = [](const Placement& p) {
+            const ItemBodies placed = itemBodies(placedItem(p));
+            return placed.segments[0].a.distance(placed.segments[0].b);
+        };
         hand.at({0.0, 5.0});
         hand.press(Key::p);
         REQUIRE(editor.playerParts().size() == 1);
-        CHECK_THAT(editor.message(), Catch::EndsWith("(at its kind's defaults: its own keys are dropped)"));
-        CHECK(itemBodies(placedItem(editor.playerParts()[0]))
+        CHECK(boardLength(editor.playerParts()[0]) == Approx(length).epsilon(1e-12));
+        ScriptDesc solution;
+        solution.level = "kit";
+        solution.placements = editor.playerParts();
+        SceneDesc stocked = readBack(editor);
+        stocked.level.inventory["plank"] = 1;
+        stocked.level.zones.push_back({{{-8.0, 1.0}, {8.0, 8.0}}, {}});
+        const ScriptLoad script = parseScript(writeScript(solution), "kit.solution.toml", stocked);
+        INFO(writeScript(solution));
+        INFO((script.errors.empty() ? std::string() : script.errors.front().format()));
+        REQUIRE(script.script);
+        CHECK(boardLength(script.script->placements[0]) == Approx(length).epsilon(1e-12));
+        // E on the player's part: its length changes, checked as the reader checks an [[item]].
+        pressE(hand);
+        retype(hand, "0");
+        hand.press(Key::enter);
+        CHECK_THAT(editor.message(), Catch::StartsWith("refused: length must be"));
+        CHECK(boardLength(editor.playerParts()[0]) == Approx(length).epsilon(1e-12));
+        pressE(hand);
+        retype(hand, scriptNumber(length + 1.0));
+        hand.press(Key::enter);
+        CHECK(boardLength(editor.playerParts()[0]) == Approx(length + 1.0).epsilon(1e-12));
+        // Fixed again, the plank keeps that length; nothing typed, it has its kind's.
+        hand.press(Key::p);
+        REQUIRE(editor.playerParts().empty());
+        CHECK(itemBodies(editor.level().level.items.back())
                   .segments[0]
-                  .a.distance(itemBodies(placedItem(editor.playerParts()[0])).segments[0].b) == Approx(2.0));
+                  .a.distance(itemBodies(editor.level().level.items.back()).segments[0].b) == Approx(length + 1.0));
+        hand.press(Key::p);
+        pressE(hand);
+        hand.erase(40);
+        hand.press(Key::enter);
+        CHECK(boardLength(editor.playerParts()[0]) == Approx(2.0));
+        CHECK(editor.playerParts()[0].ownKeys.empty());
     }
 
     SECTION("a bomb's timer and its fuse are set together: Tab keeps what is typed") {

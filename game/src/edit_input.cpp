@@ -200,11 +200,9 @@ void EditSession::markAtCursor() {
     LevelDesc& level = state_.level.level;
     if (hit.what == Hit::What::player) {
         edit();
-        const Placement p = state_.players[hit.index];
+        ItemDesc item = partOf(hit); // its own keys too
         state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
-        ItemDesc item = placedItem(p);
-        item.name = nameFor(p.kind);
-        item.angleDegrees = p.angleDegrees;
+        item.name = nameFor(item.kind);
         level.items.push_back(item);
         return say(item.name + " is a fixed part again");
     }
@@ -219,14 +217,11 @@ void EditSession::markAtCursor() {
     p.angleDegrees = item.angleDegrees.value_or(0.0);
     p.angle = scriptRadians(p.angleDegrees);
     p.name = item.name;
-    // The player's parts are the inventory's, at their kind's defaults: keys set with E are not
-    // kept, and the bar says so rather than lose them unseen.
-    const bool dropped = !item.ownLines.empty();
+    markOwnKeys(p, item); // the solution's [[place]] gives them, as a script may
     state_.players.push_back(p);
     if (level.goal && level.goal->item == item.name) level.goal.reset();
     level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
-    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution" +
-        (dropped ? " (at its kind's defaults: its own keys are dropped)" : ""));
+    say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
 }
 
 // L on a switch: its `triggers` goes to the next item it may trigger (or named rope), in level order.
@@ -252,7 +247,7 @@ void EditSession::linkAtCursor() {
         for (std::size_t i = 0; i < names.size(); ++i)
             if (*now == "triggers = " + tomlQuoted(names[i])) next = (i + 1) % names.size();
     // As E would set it: read by the level reader before it counts.
-    if (const std::string name = item.name; setKeys(hit.index, {{"triggers", tomlQuoted(names[next])}}))
+    if (const std::string name = item.name; setKeys(hit, {{"triggers", tomlQuoted(names[next])}}))
         say(name + " triggers " + names[next]);
 }
 

@@ -6,7 +6,8 @@
 /// T makes the target (or bucket) under the cursor the goal (again on its target: every target),
 /// Up and Down its time limit, O types its text; V fits
 /// the view to the parts, C shows more of the world to drag a view anywhere (the wheel zooms); E
-/// types a part's own keys (a plank's length, a cannon's speed), checked by the level reader; H types a hint, J picks
+/// types a part's own keys (a plank's length, a cannon's speed), checked by the level reader, and
+/// the player's parts keep theirs in the solution's [[place]]; H types a hint, J picks
 /// one to change (Enter) or remove (Delete); L links a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
@@ -98,10 +99,14 @@ private:
     void editKeysAtCursor();
     /// Keys of a part and what was typed for each (TOML values, or words taken as strings).
     using KeyValues = std::vector<std::pair<std::string_view, std::string>>;
-    void editKey(std::size_t index, std::size_t keyIndex, char skip, KeyValues typed);
-    /// Sets fixed item `index`'s own keys to what was typed ("" puts a key back to its default).
-    /// False, with the level reader's message on the bar, when the item would not read so.
-    bool setKeys(std::size_t index, const KeyValues& values);
+    void editKey(Hit part, std::size_t keyIndex, char skip, KeyValues typed);
+    /// Sets the own keys of a part (fixed or the player's) to what was typed ("" puts a key back to
+    /// its default). False, with the level reader's message on the bar, when it would not read so.
+    bool setKeys(Hit part, const KeyValues& values);
+    /// A part as an item, its own keys as lines (a player's part too).
+    ItemDesc partOf(const Hit& hit) const;
+    /// A player's part keeps `item`'s own keys and parameters, as a script's [[place]] holds them.
+    static void markOwnKeys(Placement& p, const ItemDesc& item);
     void tryIt();
     void changeSpare(int by);
     void fitView();

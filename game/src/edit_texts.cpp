@@ -4,6 +4,7 @@
 #include "edit_session.hpp"
 
 #include "level_writer.hpp"
+#include "placement.hpp"
 #include "scene_file.hpp"
 #include "toml_reader.hpp"
 #include "toml_writer.hpp"
@@ -135,20 +136,51 @@ std::string trimmed(const std::string& text) {
     return text.substr(first, text.find_last_not_of(' ') - first + 1);
 }
 
-} // namespace
-
-// E over a fixed part: its own keys one at a time in the bar. Tab keeps what is typed and goes to
-// the next key; Enter sets them all at once (a bomb's trigger 'timer' needs its fuse with it).
-void EditSession::editKeysAtCursor() {
-    const Hit hit = hitAtCursor();
-    if (hit.what == Hit::What::player)
-        return say("E: the player's parts have their kind's defaults (P makes it fixed again)", "magnet");
-    if (hit.what != Hit::What::item) return say("E: point at a part to set its keys", "magnet");
-    editKey(hit.index, 0, 'e', {});
+// The player's parts keep their own keys as a script's [[place]] does: key and TOML value apart.
+std::vector<std::string> linesOf(const Placement& p) {
+    std::vector<std::string> lines;
+    for (const auto& [key, value] : p.ownKeys) lines.push_back(linePrefix(key) + value);
+    return lines;
 }
 
-void EditSession::editKey(std::size_t index, std::size_t keyIndex, char skip, KeyValues typed) {
-    const ItemDesc& item = state_.level.level.items[index];
+std::vector<std::pair<std::string, std::string>> keysOf(const std::vector<std::string>& lines) {
+    std::vector<std::pair<std::string, std::string>> keys;
+    for (const std::string& line : lines) {
+        const auto equals = line.find(" = ");
+        keys.emplace_back(line.substr(0, equals), line.substr(equals + 3));
+    }
+    return keys;
+}
+
+} // namespace
+
+ItemDesc EditSession::partOf(const Hit& hit) const {
+    if (hit.what == Hit::What::item) return state_.level.level.items[hit.index];
+    const Placement& p = state_.players[hit.index];
+    ItemDesc item = placedItem(p);
+    item.angleDegrees = p.angleDegrees;
+    item.ownLines = linesOf(p);
+    return item;
+}
+
+void EditSession::markOwnKeys(Placement& p, const ItemDesc& item) {
+    p.ownKeys = keysOf(item.ownLines);
+    if (p.ownKeys.empty()) p.params.reset();
+    else p.params = item.params;
+}
+
+// E over a part, fixed or the player's: its own keys one at a time in the bar. Tab keeps what is
+// typed and goes to the next key; Enter sets them all at once (a bomb's trigger 'timer' needs its
+// fuse with it).
+void EditSession::editKeysAtCursor() {
+    const Hit hit = hitAtCursor();
+    if (hit.what != Hit::What::item && hit.what != Hit::What::player)
+        return say("E: point at a part to set its keys", "magnet");
+    editKey(hit, 0, 'e', {});
+}
+
+void EditSession::editKey(Hit part, std::size_t keyIndex, char skip, KeyValues typed) {
+    const ItemDesc item = partOf(part);
     const std::vector<PartKey> keys = ownKeys(item.kind);
     if (keys.empty()) return say("a " + std::string(item.kind->name()) + " has no keys of its own", "magnet");
     const PartKey key = keys[keyIndex % keys.size()];
@@ -164,14 +196,16 @@ void EditSession::editKey(std::size_t index, std::size_t keyIndex, char skip, Ke
     };
     ask(
         who + " " + std::string(key.key) + " (" + std::string(key.value) + "; " + std::string(key.doc) + "): ", now,
-        skip, [this, index, with](const std::string& text) { setKeys(index, with(text)); },
-        [this, index, keyIndex, with](const std::string& text) { editKey(index, keyIndex + 1, 0, with(text)); });
+        skip, [this, part, with](const std::string& text) { setKeys(part, with(text)); },
+        [this, part, keyIndex, with](const std::string& text) { editKey(part, keyIndex + 1, 0, with(text)); });
 }
 
-// Nothing typed puts a key back to its default. The changed item must read as the level reader
-// reads it, among the level's other items; else the reader's message is shown and nothing changes.
-bool EditSession::setKeys(std::size_t index, const KeyValues& values) {
-    ItemDesc changed = state_.level.level.items[index];
+// Nothing typed puts a key back to its default. The changed part must read as the level reader
+// reads an [[item]], among the level's other items (a player's part as one more); else the
+// reader's message is shown and nothing changes.
+bool EditSession::setKeys(Hit part, const KeyValues& values) {
+    const ItemDesc before = partOf(part);
+    ItemDesc changed = before;
     for (const auto& [key, text] : values) {
         const std::string value = trimmed(text);
         const auto line = std::find_if(changed.ownLines.begin(), changed.ownLines.end(),
@@ -180,16 +214,21 @@ bool EditSession::setKeys(std::size_t index, const KeyValues& values) {
         else if (!value.empty() && line != changed.ownLines.end()) *line = linePrefix(key) + tomlOrText(value);
         else if (!value.empty()) changed.ownLines.push_back(linePrefix(key) + tomlOrText(value));
     }
-    const ItemLoad load = readItemAgain(state_.level, index, writeItem(changed));
+    SceneDesc among = state_.level;
+    std::size_t index = part.index;
+    if (part.what == Hit::What::player) {
+        index = among.level.items.size();
+        among.level.items.push_back(before);
+    }
+    const ItemLoad load = readItemAgain(among, index, writeItem(changed));
     if (!load.item) {
         say("refused: " + load.errors.front().message, "magnet");
         return false;
     }
-    ItemDesc& item = state_.level.level.items[index];
     // What the bar says: the keys whose value changed (Tab passes others by as they were).
-    std::string said = (item.name.empty() ? std::string(item.kind->name()) : item.name) + ":";
+    std::string said = (before.name.empty() ? std::string(before.kind->name()) : before.name) + ":";
     for (const auto& [key, text] : values)
-        if (const std::string value = valueOf(*load.item, key); value != valueOf(item, key))
+        if (const std::string value = valueOf(*load.item, key); value != valueOf(before, key))
             said += (said.back() == ':' ? " " : ", ") + std::string(key) +
                     (value.empty() ? " at its default" : " = " + value);
     if (said.back() == ':') {
@@ -197,9 +236,14 @@ bool EditSession::setKeys(std::size_t index, const KeyValues& values) {
         return true;
     }
     edit();
-    const SourcePlace place = item.place;
-    item = *load.item;
-    item.place = place;
+    if (part.what == Hit::What::player) {
+        markOwnKeys(state_.players[part.index], *load.item);
+    } else {
+        ItemDesc& item = state_.level.level.items[part.index];
+        const SourcePlace place = item.place;
+        item = *load.item;
+        item.place = place;
+    }
     say(said);
     return true;
 }

@@ -418,13 +418,14 @@ EditCommand::EditCommand(CLI::App& app) {
                      "  cursor the goal (10 s; T again on its target: every target); Up and Down change the time\n"
                      "  limit by 1 s; O types the goal's text. V fits the view to the parts and zones; C shows\n"
                      "  three times as much around it (the wheel zooms) and a drag there draws the view (C again:\n"
-                     "  no change). E over a fixed part types its own keys (those 'rube items' lists for its kind;\n"
-                     "  Tab: the next key, Enter sets them, nothing typed: the default), checked by the level\n"
-                     "  reader. L on a switch links it to the next part it can trigger. H types a hint; J picks the\n"
-                     "  level's hints in turn: Enter changes the one shown, Delete removes it. Text is typed in the\n"
-                     "  bar: Enter keeps it, Esc drops it. Space tries the level as 'rube play' would, R or Esc\n"
-                     "  comes back. Ctrl+Z and Ctrl+Y undo and redo; Ctrl+S saves the level and NAME.solution.toml\n"
-                     "  beside it, with the goal's step as the solution's expectation. Esc quits (without saving).\n"
+                     "  no change). E over a part types its own keys (those 'rube items' lists for its kind; a\n"
+                     "  player's part keeps them in its [[place]]; Tab: the next key, Enter sets them, nothing\n"
+                     "  typed: the default), checked by the level reader. L on a switch links it to the next part\n"
+                     "  it can trigger. H types a hint; J picks the level's hints in turn: Enter changes the one\n"
+                     "  shown, Delete removes it. Text is typed in the bar: Enter keeps it, Esc drops it. Space\n"
+                     "  tries the level as 'rube play' would, R or Esc comes back. Ctrl+Z and Ctrl+Y undo and redo;\n"
+                     "  Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step as the\n"
+                     "  solution's expectation. Esc quits (without saving).\n"
                      "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
     command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
         ->type_name("LEVEL");

@@ -271,7 +271,10 @@ TEST_CASE("random plays are deterministic, refused now and then, and use every a
           "[robustness][random]") {
     const std::vector<SceneDesc> levels = shippedLevels();
     int refused = 0, placed = 0, actions = 0;
-    for (std::uint64_t seed = 1; seed <= 160; ++seed) {
+    // Ten draws a level, so each level is drawn as often whatever their number (160 draws over 16
+    // levels once; a fixed 160 fell to 5 refusals when three more levels took their share of it).
+    const auto draws = static_cast<std::uint64_t>(10 * levels.size());
+    for (std::uint64_t seed = 1; seed <= draws; ++seed) {
         const SceneDesc& level = levels[seed % levels.size()];
         SceneRng a(seed), b(seed);
         const auto pa = rube::test::randomPlacements(level, a);
@@ -283,8 +286,9 @@ TEST_CASE("random plays are deterministic, refused now and then, and use every a
         placed += !pa.empty();
         actions += static_cast<int>(rube::test::randomActions(level, pa, 300, a).size());
     }
-    CHECK(refused > 5);   // the zone and overlap rules are exercised
-    CHECK(refused < 120); // but most draws are played
-    CHECK(placed > 60);
+    const auto share = [&](double fraction) { return static_cast<int>(fraction * static_cast<double>(draws)); };
+    CHECK(refused > 5);           // the zone and overlap rules are exercised
+    CHECK(refused < share(0.75)); // but most draws are played (120 of 160)
+    CHECK(placed > share(0.375)); // (60 of 160)
     CHECK(actions > 20);
 }

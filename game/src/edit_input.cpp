@@ -237,8 +237,12 @@ void EditSession::linkAtCursor() {
         if (item.kind->plays(PartRole::triggered) && !item.name.empty()) names.push_back(item.name);
     for (const std::string& rope : state_.level.ropeNames)
         if (!rope.empty()) names.push_back(rope);
-    if (names.empty())
-        return say("L: nothing a switch can trigger yet (a cannon, bomb, fan, magnet, rocket or rope)", "magnet");
+    if (names.empty()) {
+        // The kinds as their descriptors say, so a new kind a switch may name is listed too.
+        std::string kinds;
+        for (ItemKind kind : partKindsPlaying(PartRole::triggered)) kinds += std::string(kind->name()) + ", ";
+        return say("L: nothing a switch can trigger yet (" + kinds + "or a named rope)", "magnet");
+    }
     ItemDesc& item = state_.level.level.items[hit.index];
     const auto now = std::find_if(item.ownLines.begin(), item.ownLines.end(),
                                   [](const std::string& line) { return line.starts_with("triggers = "); });

@@ -38,9 +38,11 @@ struct ItemState {
     double aim = 0.0;   ///< cannons: the barrel's angle now, radians
     bool hit = false;   ///< targets and switches: touched by a ball
     bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed)
-    bool fired = false; ///< cannons: have shot
+    bool fired = false;   ///< cannons: have shot; timers, plates, candles, detectors: have switched (once)
     std::optional<double> timedShot;   ///< cannons: a shot fireWhen() timed, waiting for this world time, s
     std::optional<double> detonatedAt; ///< bombs: when they went off, s
+    std::optional<double> since;       ///< timers, candles, pressure plates: when their clock started (the run, a
+                                       ///< switch, a weight coming to rest on it), s; none while it has not
     int field = -1; ///< magnets, fans and rockets: index of their Magnet, Wind or Thruster in the World's fields
 };
 

@@ -47,6 +47,18 @@ std::string segmentText(const SegmentDef& s) {
            " m end to end), bounciness " + number(s.material.bounciness);
 }
 
+// A rigid body of the default item: a box or capsule, its size, mass (when it moves) and material.
+std::string rigidBodyText(const RigidBodyDef& b) {
+    const Vec2 size = b.halfExtents * 2.0;
+    std::string out = b.shape == BodyShape::box
+                          ? "a box " + number(size.x) + " x " + number(size.y) + " m"
+                          : "a capsule " + number(size.x) + " m long, radius " + number(b.halfExtents.y) + " m";
+    if (b.motion == Motion::dynamic) out += ", " + number(b.mass) + " kg";
+    out += ", bounciness " + number(b.material.bounciness);
+    if (b.material.friction > 0.0) out += ", friction " + number(b.material.friction);
+    return out;
+}
+
 std::string keyDefault(ItemKind kind, const PartKey& key) {
     const bool required = key.value == "required" || (key.key == kNameKey.key && kind->needsName());
     return required ? "required" : std::string(key.value);
@@ -60,6 +72,7 @@ std::string partDefaults(ItemKind kind) {
     std::vector<std::string> parts;
     for (const CircleDef& c : bodies.circles) parts.push_back(circleText(c));
     for (const SegmentDef& s : bodies.segments) parts.push_back(segmentText(s));
+    for (const RigidBodyDef& b : bodies.rigidBodies) parts.push_back(rigidBodyText(b));
     if (bodies.magnet)
         parts.push_back("a pull of " + number(bodies.magnet->strength) + " N m^2 at 1 m, none from " +
                         number(bodies.magnet->reach) + " m");

@@ -87,8 +87,14 @@ TEST_CASE("each kind's summary states radii, masses, lengths and bounciness its 
             ++checked;
         }
         for (const double m : numbersBefore(summary, R"(([0-9.]+) kg)")) {
-            CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(),
-                              [&](const CircleDef& c) { return c.motion == Motion::dynamic && near(c.mass, m); }));
+            const bool circle = std::any_of(bodies.circles.begin(), bodies.circles.end(), [&](const CircleDef& c) {
+                return c.motion == Motion::dynamic && near(c.mass, m);
+            });
+            const bool body = std::any_of(
+                bodies.rigidBodies.begin(), bodies.rigidBodies.end(), [&](const RigidBodyDef& b) {
+                    return b.motion == Motion::dynamic && std::abs(b.mass - m) <= 0.005; // summaries round to 3 figures
+                });
+            CHECK((circle || body));
             ++checked;
         }
         for (const double l : numbersBefore(summary, R"(([0-9.]+) m long)")) {
@@ -101,7 +107,9 @@ TEST_CASE("each kind's summary states radii, masses, lengths and bounciness its 
                                             [&](const CircleDef& b) { return near(b.material.bounciness, c); });
             const bool segment = std::any_of(bodies.segments.begin(), bodies.segments.end(),
                                              [&](const SegmentDef& s) { return near(s.material.bounciness, c); });
-            CHECK((circle || segment));
+            const bool body = std::any_of(bodies.rigidBodies.begin(), bodies.rigidBodies.end(),
+                                          [&](const RigidBodyDef& b) { return near(b.material.bounciness, c); });
+            CHECK((circle || segment || body));
             ++checked;
         }
     }

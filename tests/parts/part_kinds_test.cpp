@@ -64,7 +64,9 @@ TEST_CASE("each kind's default item is of that kind, and its bodies and room lie
             }
             // A kind picked by a click is picked at its own position.
             CHECK(kind->picked(item, item.position, item.position, 0.0) ==
-                  (kind->room(item).circles.size() + kind->room(item).segments.size() > 0));
+                  (kind->room(item).circles.size() + kind->room(item).segments.size() +
+                       kind->room(item).rigidBodies.size() >
+                   0));
         }
     }
 }

@@ -1,0 +1,42 @@
+#pragma once
+/// Ray casts against a World's circles and segments: the first surface a ray from a point meets.
+/// The physics knows nothing of what casts them (a laser's beam in the game, a line of sight).
+///
+/// A ray is p(t) = origin + t d, t >= 0, d a unit direction, so t is the distance travelled. It meets
+/// a circle (centre c, radius r) where |p(t) - c|^2 = r^2: t^2 + 2 t (d . m) + |m|^2 - r^2 = 0 with
+/// m = origin - c, the smaller root t = -(d . m) - sqrt((d . m)^2 - |m|^2 + r^2) (lecture 5's
+/// line-circle intersection). A segment with a radius is a capsule: its two end caps are circles,
+/// and its two sides are the lines through a and b moved out by r along the unit normal n, met at
+/// t = (r - (origin - a) . n) / (d . n) from the side the ray approaches. Only surfaces the ray
+/// enters count: a ray that starts on or inside a shape (a beam leaving a mirror it just struck)
+/// does not meet that shape again.
+/// Rigid bodies (boxes, capsules that turn) are not cast against.
+
+#include "rube/physics/vec2.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace rube {
+
+class World;
+
+/// What a ray met first.
+struct RayHit {
+    enum class Shape : std::uint8_t { circle, segment };
+    Shape shape = Shape::circle;
+    int slot = -1;         ///< the circle's or segment's slot in World::circles() or segments()
+    double distance = 0.0; ///< t: how far along the ray, m
+    Vec2 point;            ///< where: origin + distance * direction
+    Vec2 normal;           ///< the unit normal of the surface there, pointing out of the shape (against the ray)
+};
+
+/// The first circle or segment surface the ray from `origin` along unit `direction` enters within
+/// `maxDistance` m, if any. Every circle counts (dynamic, kinematic and fixed), every enabled segment.
+std::optional<RayHit> rayCast(const World& world, Vec2 origin, Vec2 direction, double maxDistance);
+
+/// The ray from `origin` along unit `direction` against one circle: the distance at which it enters,
+/// if it does (none when it starts inside or on it, or misses).
+std::optional<double> rayCircle(Vec2 origin, Vec2 direction, Vec2 centre, double radius);
+
+} // namespace rube

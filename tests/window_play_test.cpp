@@ -530,6 +530,33 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     CHECK(editor.message() == "switch1 triggers cannon1");
     press(Key::v);
 
+    // E types a part's own key (the cannon's speed), O the goal's text, J then Enter changes a
+    // hint; C and a drag set the view beyond the fitted one.
+    const auto typeText = [&](const std::string& text) {
+        for (const char c : text) editor.typed(static_cast<char32_t>(c));
+    };
+    at({-6.0, 2.0});
+    press(Key::e);
+    typeText("e9");
+    press(Key::enter);
+    CHECK(editor.message() == "cannon1: speed = 9");
+    press(Key::o);
+    typeText("o");
+    for (int i = 0; i < 40; ++i) press(Key::backspace);
+    typeText("Drop the ball on the target");
+    press(Key::enter);
+    press(Key::j);
+    press(Key::enter);
+    typeText(" Soon.");
+    press(Key::enter);
+    press(Key::c);
+    show();
+    at({9.0, 8.0});
+    editor.mouseButton(MouseButton::left, true);
+    at({-9.0, -1.0});
+    editor.mouseButton(MouseButton::left, false);
+    show();
+
     // Saved: `rube check --strict` passes the level and its solution, which replays to that step.
     control(Key::s);
     INFO(editor.message());
@@ -551,7 +578,10 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     const std::string written((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
     CHECK_THAT(written, Catch::Contains("time_limit = 6\n")); // set with Down
     CHECK_THAT(written, Catch::Contains("heavy = 1\nplank = 2\n"));
-    CHECK_THAT(written, Catch::Contains("[[hint]]\ntext = 'Drop it, on it.!'\n"));
+    CHECK_THAT(written, Catch::Contains("[[hint]]\ntext = 'Drop it, on it.! Soon.'\n"));
+    CHECK_THAT(written, Catch::Contains("[view]\nmin = [-9, -1]\nmax = [9, 8]\n"));
+    CHECK_THAT(written, Catch::Contains("name = 'cannon1'\nposition = [-6, 2]\nspeed = 9\n"));
+    CHECK_THAT(written, Catch::Contains("text = 'Drop the ball on the target'\ncondition = 'target-hit'\n"));
     CHECK_THAT(written, Catch::Contains("name = 'switch1'\nposition = [6, 0.5]\ntriggers = 'cannon1'\n"));
 
     // A shipped level opened with its solution keeps its inventory, spares and all.

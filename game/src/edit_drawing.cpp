@@ -1,5 +1,6 @@
 // The editor's picture: the level as the play window draws it (the player's parts placed), the
-// zones, the player's parts outlined, the zone being drawn, and the bar's lines.
+// zones, the player's parts outlined, the zone (or view) being drawn, the view while C draws one,
+// and the bar's lines.
 #include "edit_session.hpp"
 
 #include "rube/render/palette.hpp"
@@ -25,6 +26,8 @@ void EditSession::draw(render::DrawList& list) const {
     view_.draw(preview, 0, list);
     for (const Zone& zone : state_.level.level.zones)
         zoneBox(zone.box, {palette["goal"].withAlpha(0x30), palette["goal"], 1.5f}, list);
+    if (viewMode_ && state_.level.view)
+        zoneBox(*state_.level.view, {render::Color::transparent(), palette["hud_text"], 2.0f}, list);
     if (zoneStart_) {
         const Vec2 end = cursorWorld_;
         zoneBox({{std::min(zoneStart_->x, end.x), std::min(zoneStart_->y, end.y)},
@@ -38,7 +41,7 @@ void EditSession::draw(render::DrawList& list) const {
         for (const SegmentDef& s : bodies.segments) list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius), look);
     }
     std::string mode = "EDIT ";
-    mode += zoneMode_ ? std::string_view("zones") : selectedKind()->name();
+    mode += viewMode_ ? std::string_view("view") : zoneMode_ ? std::string_view("zones") : selectedKind()->name();
     mode += "  Tab kind Z zones P player's T goal Space try Ctrl+S save Ctrl+Z undo Esc quit";
     char corner[64];
     std::snprintf(corner, sizeof corner, "x %.2f  y %.2f", cursorWorld_.x + 0.0, cursorWorld_.y + 0.0);

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace rube::game {
 
@@ -23,6 +24,8 @@ using render::MouseButton;
 constexpr double kGridPerMetre = 20.0; // 5 cm, as the play window's grid
 constexpr double kTurnStep = 15.0;     // degrees
 constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
+constexpr double kSmallestView = 1.0;  // m: nor a view
+constexpr double kZoomStep = 1.25;     // C's wider window, per notch of the wheel
 
 Vec2 snapped(Vec2 v) { return {snap(v.x, kGridPerMetre), snap(v.y, kGridPerMetre)}; }
 
@@ -85,6 +88,7 @@ void EditSession::moveDragged() {
 
 void EditSession::mouseButton(MouseButton button, bool pressed) {
     if (trying_) return trying_->mouseButton(button, pressed);
+    hintPicked_.reset();
     if (button == MouseButton::right && pressed) return removeAtCursor();
     if (button != MouseButton::left) return;
     if (!pressed) {
@@ -93,7 +97,10 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
             const Aabb box{{std::min(zoneStart_->x, end.x), std::min(zoneStart_->y, end.y)},
                            {std::max(zoneStart_->x, end.x), std::max(zoneStart_->y, end.y)}};
             zoneStart_.reset();
-            if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
+            if (viewMode_) {
+                if (box.max.x - box.min.x >= kSmallestView && box.max.y - box.min.y >= kSmallestView) setView(box);
+                else say("a view is at least 1 m each way: drag a bigger one", "magnet");
+            } else if (box.max.x - box.min.x >= kSmallestZone && box.max.y - box.min.y >= kSmallestZone) {
                 edit();
                 state_.level.level.zones.push_back({box, {}});
                 say("zone " + formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y));
@@ -104,6 +111,10 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
         return;
     }
     if (bar_.contains(cursor_)) return;
+    if (viewMode_) {
+        zoneStart_ = snapped(cursorWorld_);
+        return;
+    }
     if (zoneMode_) {
         // On a zone's corner, a drag resizes the zone; elsewhere it draws a new one.
         if ((resizing_ = zoneCornerAtCursor())) edit();
@@ -129,19 +140,20 @@ void EditSession::mouseButton(MouseButton button, bool pressed) {
 }
 
 void EditSession::typed(char32_t codePoint) {
-    if (trying_ || !hintDraft_) return;
-    if (skipTyped_) {
-        skipTyped_ = false;
-        if (codePoint == U'h' || codePoint == U'H') return;
-    }
-    // The HUD's font draws printable ASCII only.
-    if (codePoint < 32 || codePoint > 126) return;
-    *hintDraft_ += static_cast<char>(codePoint);
-    say("hint: " + *hintDraft_ + "_");
+    if (trying_ || !field_) return;
+    field_->text.typed(codePoint);
+    say(field_->text.line());
 }
 
 void EditSession::scrolled(float notches) {
     if (trying_) return trying_->scrolled(notches);
+    if (viewMode_) {
+        // Away from the user zooms in, as maps do.
+        const Vec2 centre = (wideView_.min + wideView_.max) * 0.5;
+        const Vec2 half = (wideView_.max - wideView_.min) * (0.5 * std::pow(kZoomStep, -notches));
+        wideView_ = {centre - half, centre + half};
+        return refreshCamera();
+    }
     if (const int clicks = static_cast<int>(std::lround(notches)); clicks != 0) turnAtCursor(clicks * kTurnStep);
 }
 
@@ -174,6 +186,11 @@ void EditSession::removeAtCursor() {
     } else {
         if (level.goal && level.goal->item == level.items[hit.index].name) level.goal.reset();
         level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
+        // Every target with none left is no goal (the reader refuses it).
+        if (level.goal && level.goal->kind == GoalKind::allTargets &&
+            std::none_of(level.items.begin(), level.items.end(),
+                         [](const ItemDesc& item) { return item.kind->plays(PartRole::goalTarget); }))
+            level.goal.reset();
     }
     say("removed");
 }
@@ -183,11 +200,9 @@ void EditSession::markAtCursor() {
     LevelDesc& level = state_.level.level;
     if (hit.what == Hit::What::player) {
         edit();
-        const Placement p = state_.players[hit.index];
+        ItemDesc item = partOf(hit); // its own keys too
         state_.players.erase(state_.players.begin() + static_cast<std::ptrdiff_t>(hit.index));
-        ItemDesc item = placedItem(p);
-        item.name = nameFor(p.kind);
-        item.angleDegrees = p.angleDegrees;
+        item.name = nameFor(item.kind);
         level.items.push_back(item);
         return say(item.name + " is a fixed part again");
     }
@@ -202,6 +217,7 @@ void EditSession::markAtCursor() {
     p.angleDegrees = item.angleDegrees.value_or(0.0);
     p.angle = scriptRadians(p.angleDegrees);
     p.name = item.name;
+    markOwnKeys(p, item); // the solution's [[place]] gives them, as a script may
     state_.players.push_back(p);
     if (level.goal && level.goal->item == item.name) level.goal.reset();
     level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
@@ -221,8 +237,12 @@ void EditSession::linkAtCursor() {
         if (item.kind->plays(PartRole::triggered) && !item.name.empty()) names.push_back(item.name);
     for (const std::string& rope : state_.level.ropeNames)
         if (!rope.empty()) names.push_back(rope);
-    if (names.empty())
-        return say("L: nothing a switch can trigger yet (a cannon, bomb, fan, laser, ... or a rope)", "magnet");
+    if (names.empty()) {
+        // The kinds as their descriptors say, so a new kind a switch may name is listed too.
+        std::string kinds;
+        for (ItemKind kind : partKindsPlaying(PartRole::triggered)) kinds += std::string(kind->name()) + ", ";
+        return say("L: nothing a switch can trigger yet (" + kinds + "or a named rope)", "magnet");
+    }
     ItemDesc& item = state_.level.level.items[hit.index];
     const auto now = std::find_if(item.ownLines.begin(), item.ownLines.end(),
                                   [](const std::string& line) { return line.starts_with("triggers = "); });
@@ -230,32 +250,56 @@ void EditSession::linkAtCursor() {
     if (now != item.ownLines.end())
         for (std::size_t i = 0; i < names.size(); ++i)
             if (*now == "triggers = " + tomlQuoted(names[i])) next = (i + 1) % names.size();
-    edit();
-    // The switch's own parameters are read when the level is saved or tried: its line is what counts.
-    std::erase_if(item.ownLines, [](const std::string& line) { return line.starts_with("triggers = "); });
-    state_.level.level.items[hit.index].ownLines.push_back("triggers = " + tomlQuoted(names[next]));
-    say(item.name + " triggers " + names[next]);
+    // As E would set it: read by the level reader before it counts.
+    if (const std::string name = item.name; setKeys(hit, {{"triggers", tomlQuoted(names[next])}}))
+        say(name + " triggers " + names[next]);
 }
 
+namespace {
+
+// The text T gives a goal; a text typed with O is kept when T changes the goal.
+std::string goalText(const Goal& goal) {
+    switch (goal.kind) {
+    case GoalKind::targetHit: return "hit the " + goal.item;
+    case GoalKind::ballInBucket: return "get a ball into the " + goal.item;
+    case GoalKind::allTargets: return "hit every target";
+    }
+    return "";
+}
+
+} // namespace
+
+// T on a target: hit it; T again on the goal's own target: hit every target; again: that one.
+// T on a bucket: a ball in it.
 void EditSession::goalAtCursor() {
     const Hit hit = hitAtCursor();
     if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
     const ItemDesc& item = state_.level.level.items[hit.index];
+    const std::optional<Goal>& now = state_.level.level.goal;
     Goal goal;
-    goal.timeLimit = state_.level.level.goal ? state_.level.level.goal->timeLimit : std::optional<double>(10.0);
+    goal.timeLimit = now ? now->timeLimit : std::optional<double>(10.0);
     goal.item = item.name;
     if (item.kind->plays(PartRole::goalTarget)) {
         goal.kind = GoalKind::targetHit;
-        goal.text = "hit the " + item.name;
+        if (now && now->kind == GoalKind::targetHit && now->item == item.name) {
+            goal.kind = GoalKind::allTargets;
+            goal.item.clear();
+        }
     } else if (item.kind->plays(PartRole::goalBucket)) {
         goal.kind = GoalKind::ballInBucket;
-        goal.text = "get a ball into the " + item.name;
     } else {
         return say("T: a " + std::string(item.kind->name()) + " cannot be a goal", "magnet");
     }
+    goal.text = now && now->text != goalText(*now) ? now->text : goalText(goal);
     edit();
     state_.level.level.goal = goal;
-    say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+    sayGoal();
+}
+
+void EditSession::sayGoal() {
+    const Goal& goal = *state_.level.level.goal;
+    std::string limit = goal.timeLimit ? " within " + play::number(*goal.timeLimit) + " s" : std::string();
+    say("goal " + std::string(conditionName(goal.kind)) + ": " + goal.text + limit);
 }
 
 void EditSession::key(Key key, KeyAction action) {
@@ -268,23 +312,13 @@ void EditSession::key(Key key, KeyAction action) {
         return trying_->key(key, action);
     }
     if (action == KeyAction::release) return;
-    if (hintDraft_) {
-        // Typing a hint: only these keys act; the rest type (typed()).
-        if (key == Key::enter && action == KeyAction::press) {
-            if (!hintDraft_->empty()) {
-                edit();
-                state_.level.level.hints.push_back({*hintDraft_, {}});
-                say("hint " + std::to_string(state_.level.level.hints.size()) + " kept: " + *hintDraft_);
-            }
-            hintDraft_.reset();
-        } else if (key == Key::escape && action == KeyAction::press) {
-            hintDraft_.reset();
-            say("no hint");
-        } else if (key == Key::backspace && !hintDraft_->empty()) {
-            hintDraft_->pop_back();
-            say("hint: " + *hintDraft_ + "_");
-        }
-        return;
+    if (field_) return fieldKey(key, action);
+    // J's pick lasts one key: Enter changes that hint, Delete removes it, J picks the next.
+    const std::optional<std::size_t> hint = std::exchange(hintPicked_, std::nullopt);
+    if (hint && action == KeyAction::press) {
+        if (key == Key::enter) return changeHint(*hint);
+        if (key == Key::deleteKey || key == Key::backspace) return removeHint(*hint);
+        if (key == Key::j) return pickHint(*hint + 1);
     }
     if (key == Key::leftBracket || key == Key::rightBracket)
         return turnAtCursor(key == Key::leftBracket ? kTurnStep : -kTurnStep);
@@ -299,6 +333,7 @@ void EditSession::key(Key key, KeyAction action) {
             refreshCamera();
             say("undone");
         } else if (!control_) {
+            if (std::exchange(viewMode_, false)) refreshCamera();
             zoneMode_ = !zoneMode_;
             say(zoneMode_ ? "zones: drag to draw a placement zone, Z again to place parts" : "placing parts");
         }
@@ -322,20 +357,20 @@ void EditSession::key(Key key, KeyAction action) {
         {
             Goal& goal = *state_.level.level.goal;
             goal.timeLimit = std::max(1.0, std::round(goal.timeLimit.value_or(10.0)) + (key == Key::up ? 1.0 : -1.0));
-            say("goal: " + goal.text + " within " + play::number(*goal.timeLimit) + " s");
+            sayGoal();
         }
         break;
     case Key::v: fitView(); break;
+    case Key::c: toggleViewMode(); break;
     case Key::l: linkAtCursor(); break;
-    case Key::h:
-        hintDraft_ = std::string();
-        skipTyped_ = true;
-        say("hint: _  (type it; Enter keeps it, Esc drops it)");
-        break;
+    case Key::h: addHint(); break;
+    case Key::j: pickHint(0); break;
     case Key::i: changeSpare(1); break;
     case Key::k: changeSpare(-1); break;
     case Key::p: markAtCursor(); break;
     case Key::t: goalAtCursor(); break;
+    case Key::o: typeGoalText(); break;
+    case Key::e: editKeysAtCursor(); break;
     case Key::deleteKey:
     case Key::backspace: removeAtCursor(); break;
     case Key::space: tryIt(); break;

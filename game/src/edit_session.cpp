@@ -53,8 +53,11 @@ void EditSession::say(std::string text, const char* colour) {
 void EditSession::edit() { history_.record(state_); }
 
 // The camera follows the level's [view]: after V, and after an undo or redo that changed it.
+// While C draws a view, the camera shows the wider box around it instead.
 void EditSession::refreshCamera() {
-    const render::Camera camera = play::levelCamera(state_.level, bar_.levelFrame());
+    SceneDesc shown = state_.level;
+    if (viewMode_) shown.view = wideView_;
+    const render::Camera camera = play::levelCamera(shown, bar_.levelFrame());
     bar_ = InventoryBar(camera, bar_.levelFrame(), {});
     view_ = LevelView(state_.level.name, camera, bar_.levelFrame());
 }
@@ -71,13 +74,37 @@ void EditSession::fitView() {
     for (const Placement& p : state_.players) add(itemExtent(placedItem(p)));
     for (const Zone& zone : state_.level.level.zones) add(zone.box);
     if (!box) return say("V: nothing to fit the view to", "magnet");
-    edit();
     const double margin = 1.0;
-    state_.level.view = Aabb{{std::floor(box->min.x - margin), std::floor(box->min.y - margin)},
-                             {std::ceil(box->max.x + margin), std::ceil(box->max.y + margin)}};
+    setView({{std::floor(box->min.x - margin), std::floor(box->min.y - margin)},
+             {std::ceil(box->max.x + margin), std::ceil(box->max.y + margin)}});
+}
+
+void EditSession::setView(const Aabb& box) {
+    edit();
+    state_.level.view = box;
+    viewMode_ = false;
     refreshCamera();
-    say("view " + formatPair(state_.level.view->min.x, state_.level.view->min.y) + " to " +
-        formatPair(state_.level.view->max.x, state_.level.view->max.y));
+    say("view " + formatPair(box.min.x, box.min.y) + " to " + formatPair(box.max.x, box.max.y));
+}
+
+// C: the window shows three times the view's width and height around it (the wheel zooms), and a
+// drag draws the new view, which the camera then follows; C again leaves the view as it was.
+void EditSession::toggleViewMode() {
+    viewMode_ = !viewMode_;
+    zoneMode_ = false;
+    zoneStart_.reset();
+    if (!viewMode_) {
+        refreshCamera();
+        return say("the view is left as it was");
+    }
+    const render::FrameSize frame = bar_.levelFrame();
+    const Vec2 a = bar_.toWorld({0.0f, 0.0f});
+    const Vec2 b = bar_.toWorld({static_cast<float>(frame.width), static_cast<float>(frame.height)});
+    const Vec2 centre = (a + b) * 0.5;
+    const Vec2 half{std::abs(b.x - a.x) * 1.5, std::abs(b.y - a.y) * 1.5};
+    wideView_ = {centre - half, centre + half};
+    refreshCamera();
+    say("view: drag the level's view (the wheel zooms out and in; C again leaves it as it was)");
 }
 
 std::string EditSession::nameFor(ItemKind kind) const {

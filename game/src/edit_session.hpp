@@ -3,18 +3,24 @@
 /// without limit, moved, turned and deleted; placement zones are drawn; a part marked as the
 /// player's (P) is saved as a placement of the solution script and counted into the inventory,
 /// with spares (I, K);
-/// T makes the target (or bucket) under the cursor the goal, Up and Down its time limit; V fits
-/// the view to the parts; H types a hint; L links a switch to what it triggers; Space tries the level in a
+/// T makes the target (or bucket) under the cursor the goal (again on its target: every target),
+/// Up and Down its time limit, O types its text; V fits
+/// the view to the parts, C shows more of the world to drag a view anywhere (the wheel zooms); E
+/// types a part's own keys (a plank's length, a cannon's speed), checked by the level reader, and
+/// the player's parts keep theirs in the solution's [[place]]; H types a hint, J picks
+/// one to change (Enter) or remove (Delete); L links a switch to what it triggers; Space tries the level in a
 /// PlaySession and R or Esc comes back; Ctrl+S saves the level (level_writer) and
 /// NAME.solution.toml beside it. Edits are undone with the play window's EditHistory. Like
 /// PlaySession it sees the window only as an InputListener and a DrawList.
 
 #include "edit_history.hpp"
+#include "edit_text_field.hpp"
 #include "inventory_bar.hpp"
 #include "level_view.hpp"
 #include "play_session.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -51,6 +57,8 @@ public:
 
     /// The kind a click places (Tab cycles through every kind).
     ItemKind selectedKind() const { return allPartKinds()[selected_]; }
+    /// True while C's drag draws the level's view over a wider part of the world.
+    bool drawingView() const { return viewMode_; }
     /// The level as it stands (the fixed parts; the player's are in playerParts()).
     const SceneDesc& level() const { return state_.level; }
     /// The parts marked as the player's, as placements.
@@ -86,10 +94,34 @@ private:
     void removeAtCursor();
     void markAtCursor();
     void goalAtCursor();
+    void sayGoal();
+    void typeGoalText();
+    void editKeysAtCursor();
+    /// Keys of a part and what was typed for each (TOML values, or words taken as strings).
+    using KeyValues = std::vector<std::pair<std::string_view, std::string>>;
+    void editKey(Hit part, std::size_t keyIndex, char skip, KeyValues typed);
+    /// Sets the own keys of a part (fixed or the player's) to what was typed ("" puts a key back to
+    /// its default). False, with the level reader's message on the bar, when it would not read so.
+    bool setKeys(Hit part, const KeyValues& values);
+    /// A part as an item, its own keys as lines (a player's part too).
+    ItemDesc partOf(const Hit& hit) const;
+    /// A player's part keeps `item`'s own keys and parameters, as a script's [[place]] holds them.
+    static void markOwnKeys(Placement& p, const ItemDesc& item);
     void tryIt();
     void changeSpare(int by);
     void fitView();
+    void toggleViewMode();
+    void setView(const Aabb& box);
     void linkAtCursor();
+    void addHint();
+    void pickHint(std::size_t index);
+    void changeHint(std::size_t index);
+    void removeHint(std::size_t index);
+    /// Opens the bar's text field: `accept` gets the text on Enter, `next` gets it on Tab (none:
+    /// Tab is ignored). `skip`: the character the opening key types.
+    void ask(std::string prompt, std::string text, char skip, std::function<void(const std::string&)> accept,
+             std::function<void(const std::string&)> next = {});
+    void fieldKey(render::Key key, render::KeyAction action);
     void refreshCamera();
     std::optional<std::pair<std::size_t, int>> zoneCornerAtCursor() const;
 
@@ -104,11 +136,18 @@ private:
     std::optional<Hit> dragging_; // an item or player's part being moved
     Vec2 dragOffset_;             // from the cursor to the dragged part's position
     bool zoneMode_ = false;       // Z: a drag draws a zone
-    std::optional<Vec2> zoneStart_;
+    bool viewMode_ = false;       // C: a drag draws the level's [view], over a wider part of the world
+    Aabb wideView_;               // what the window shows meanwhile
+    std::optional<Vec2> zoneStart_;                       // where a drag drawing a zone (or the view) began
     std::optional<std::pair<std::size_t, int>> resizing_; // a zone and its corner (0-3) being dragged
     bool control_ = false;
-    std::optional<std::string> hintDraft_; // H: the hint being typed (Enter keeps it, Esc drops it)
-    bool skipTyped_ = false;               // the 'h' that H itself types
+    struct Field {
+        TextField text;
+        std::function<void(const std::string&)> accept;
+        std::function<void(const std::string&)> next; // Tab, with what is typed
+    };
+    std::optional<Field> field_;            // the bar's text field while something is typed
+    std::optional<std::size_t> hintPicked_; // J: the hint Enter changes and Delete removes, until another key
     bool quit_ = false;
     std::string message_;
     render::Color messageColor_;

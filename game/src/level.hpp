@@ -24,6 +24,9 @@ struct Zone {
 /// What wins the level.
 enum class GoalKind : std::uint8_t { targetHit, ballInBucket, allTargets };
 
+/// The goal's condition as files spell it: "target-hit", "ball-in-bucket", "all-targets".
+std::string_view conditionName(GoalKind kind);
+
 /// The goal: its text for the HUD, the condition and an optional time limit.
 struct Goal {
     std::string text; ///< what the player is told

@@ -1,5 +1,6 @@
 // Level files: the tables a level adds to a scene, [[item]], [inventory], [[zone]] and [goal],
 // read by the same TableReader as every other table so that errors look the same everywhere.
+#include "scene_file.hpp"
 #include "scene_reading.hpp"
 #include "toml_writer.hpp"
 
@@ -152,6 +153,8 @@ void readGoal(TableReader& root, SceneReading& reading) {
 
 } // namespace
 
+std::string_view conditionName(GoalKind kind) { return kConditionNames[static_cast<std::size_t>(kind)]; }
+
 std::string readBodyName(TableReader& table, SceneReading& reading, Need need) {
     const auto name = table.string("name", need);
     if (!name) return "";
@@ -204,6 +207,30 @@ void readClicks(TableReader& root, SceneReading& reading) {
         names.push_back(name->get());
     }
     reading.scene.level.clicks = std::move(names);
+}
+
+// The editor's check of a part's own keys: the reader's own readItem and checkReferences, among the
+// level's other items (references to them resolve, and their names stay taken).
+ItemLoad readItemAgain(const SceneDesc& level, std::size_t index, std::string_view itemToml) {
+    Diagnostics diag(level.name);
+    const std::optional<toml::table> parsed = parseToml(itemToml, level.name, diag);
+    const toml::array* items = parsed ? (*parsed)["item"].as_array() : nullptr;
+    const toml::table* table = items && items->size() == 1 ? items->get(0)->as_table() : nullptr;
+    if (!table) {
+        if (diag.empty()) diag.error({1, 1}, "one [[item]] table was expected");
+        return {std::nullopt, diag.sorted()};
+    }
+    SceneDesc scene = level;
+    scene.level.items.erase(scene.level.items.begin() + static_cast<std::ptrdiff_t>(index));
+    SceneReading reading{diag, scene, {}, {}};
+    for (std::size_t i = 0; i < scene.paths.size(); ++i) reading.pathIndex[scene.paths[i].name] = static_cast<int>(i);
+    for (const ItemDesc& other : scene.level.items)
+        if (!other.name.empty()) reading.names[other.name] = other.place;
+    readItem(*table, reading);
+    if (diag.empty() && scene.level.items.size() == level.level.items.size())
+        scene.level.items.back().kind->checkReferences(scene.level.items.back(), reading);
+    if (!diag.empty()) return {std::nullopt, diag.sorted()};
+    return {scene.level.items.back(), {}};
 }
 
 void readLevel(TableReader& root, SceneReading& reading) {

@@ -12,15 +12,6 @@ namespace rube::game {
 
 namespace {
 
-const char* conditionName(GoalKind kind) {
-    switch (kind) {
-    case GoalKind::targetHit: return "target-hit";
-    case GoalKind::ballInBucket: return "ball-in-bucket";
-    case GoalKind::allTargets: return "all-targets";
-    }
-    return "";
-}
-
 std::string quoted(const std::string& text) { return tomlQuoted(text); }
 
 // Strings are built by appending: GCC 12 warns (-Wrestrict, wrongly) at "literal" + std::string.
@@ -45,8 +36,10 @@ void box(std::string& out, std::string_view header, const Aabb& box) {
     line(out, "max", pair(box.max));
 }
 
-void item(std::string& out, const ItemDesc& item) {
-    out += "\n[[item]]\n";
+} // namespace
+
+std::string writeItem(const ItemDesc& item) {
+    std::string out = "[[item]]\n";
     line(out, "kind", quoted(std::string(item.kind->name())));
     if (!item.name.empty()) line(out, "name", quoted(item.name));
     line(out, "position", pair(item.position));
@@ -59,12 +52,15 @@ void item(std::string& out, const ItemDesc& item) {
         out += own;
         out += '\n';
     }
+    return out;
 }
+
+namespace {
 
 void goal(std::string& out, const Goal& goal) {
     out += "\n[goal]\n";
     line(out, "text", quoted(goal.text));
-    line(out, "condition", quoted(conditionName(goal.kind)));
+    line(out, "condition", quoted(std::string(conditionName(goal.kind))));
     if (goal.kind == GoalKind::targetHit) line(out, "target", quoted(goal.item));
     if (goal.kind == GoalKind::ballInBucket) line(out, "bucket", quoted(goal.item));
     if (goal.timeLimit) line(out, "time_limit", scriptNumber(*goal.timeLimit));
@@ -80,7 +76,10 @@ std::string writeLevel(const SceneDesc& scene, const std::string& header) {
     text += scene.physicsToml;
     if (scene.view) box(text, "\n[view]\n", *scene.view);
     const LevelDesc& level = scene.level;
-    for (const ItemDesc& i : level.items) item(text, i);
+    for (const ItemDesc& i : level.items) {
+        text += '\n';
+        text += writeItem(i);
+    }
     if (!level.inventory.empty()) {
         text += "\n[inventory]\n";
         for (const auto& [kind, count] : level.inventory) line(text, kind, std::to_string(count));

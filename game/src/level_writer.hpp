@@ -12,5 +12,7 @@ namespace rube::game {
 
 /// `scene` as TOML, under `header` (comment lines, each starting with '#', or empty).
 std::string writeLevel(const SceneDesc& scene, const std::string& header = "");
+/// One item as its [[item]] table: kind, name, position, angle, then its own keys as read.
+std::string writeItem(const ItemDesc& item);
 
 } // namespace rube::game

@@ -30,4 +30,15 @@ SceneLoad loadSceneFile(const std::filesystem::path& file);
 /// Validates scene text; `fileName` is what the errors are reported under.
 SceneLoad parseScene(std::string_view text, const std::string& fileName);
 
+/// One item read again: the item when it reads, else every error the reader finds.
+struct ItemLoad {
+    std::optional<ItemDesc> item;   ///< present exactly when there are no errors
+    std::vector<SceneError> errors; ///< in the text's places
+};
+
+/// Item `index` of `level` read from `itemToml`, one [[item]] table, as a level file's reader reads
+/// it among the level's other items (a switch may name them; their names are taken): the editor's
+/// check of a part's own keys, with the reader's own messages.
+ItemLoad readItemAgain(const SceneDesc& level, std::size_t index, std::string_view itemToml);
+
 } // namespace rube::game

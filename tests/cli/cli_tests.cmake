@@ -329,10 +329,13 @@ foreach(script script-errors.toml placements.solution.toml no-heavy.toml)
                 -DSTDERR_FIXTURE_ALL=${lint}/${script})
 endforeach()
 # Messages: the level's tables are among the top-level keys offered; a switch lists ropes among what it can switch,
-# and one aimed at nothing it can switch (an empty name, a target) is refused: an error, not only a lint warning.
-foreach(stem zones-typo switch-empty switch-target)
+# and one aimed at nothing it can switch (an empty name, an unknown one, a target) is refused by the level reader:
+# an error at its `triggers` (exit 2, for check and run alike), not a lint warning.
+foreach(stem zones-typo switch-empty switch-target switch-unknown)
   rube_cli_test("check ${stem}" "check|${lint}/${stem}.toml" 2 -DSTDERR_FIXTURE=${lint}/${stem}.toml)
 endforeach()
+rube_cli_test("run refuses a switch aimed at an unknown name" "run|${lint}/switch-unknown.toml|--no-render" 2
+              -DSTDERR_FIXTURE=${lint}/switch-unknown.toml)
 rube_cli_test("check script without its level" "check|${lint}/orphan.toml" 2
               "-DSTDERR_LINE=${lint}/orphan.toml: a script is checked against its level, and it is not named NAME.solution.toml, NAME.solution.WORD.toml or NAME.wrong.WORD.toml beside NAME.toml: name the level with --level LEVEL")
 rube_cli_test("help check names --level and --strict" "check|--help" 0 "-DSTDOUT_MATCH=--level LEVEL.*--strict")

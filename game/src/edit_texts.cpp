@@ -206,8 +206,11 @@ void EditSession::editKey(Hit part, std::size_t keyIndex, char skip, KeyValues t
 bool EditSession::setKeys(Hit part, const KeyValues& values) {
     const ItemDesc before = partOf(part);
     ItemDesc changed = before;
-    for (const auto& [key, text] : values) {
-        const std::string value = trimmed(text);
+    for (const auto& entry : values) {
+        // Not a structured binding: clang 14 (Debian 12's, the fuzz and cross-compiler trees) cannot
+        // capture one in the lambda below.
+        const auto& key = entry.first;
+        const std::string value = trimmed(entry.second);
         const auto line = std::find_if(changed.ownLines.begin(), changed.ownLines.end(),
                                        [&](const std::string& own) { return own.starts_with(linePrefix(key)); });
         if (value.empty() && line != changed.ownLines.end()) changed.ownLines.erase(line);

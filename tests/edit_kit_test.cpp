@@ -548,3 +548,47 @@ TEST_CASE("E sets a part's own keys, which the part then has, and the reader's r
         CHECK(editor.undoable() == undoable);
     }
 }
+
+TEST_CASE("a belt is picked on its runs between its wheels, and E sets the wheels it runs on", "[edit]") {
+    // Wheels of radius r1 at (-2, 4) and r2 at (2, 4): the runs are the outer tangents, touching
+    // wheel i at its centre + r_i n with n = (cos phi, +-sin phi), cos phi = (r1 - r2) / d.
+    const double r1 = GENERATE(0.5, 0.8), r2 = GENERATE(0.3, 0.5);
+    const Vec2 one{-2.0, 4.0}, two{2.0, 4.0};
+    EditSession editor(bench("[[item]]\nkind = \"wheel\"\nname = \"left\"\nposition = [-2, 4]\nradius = " +
+                             scriptNumber(r1) + "\n[[item]]\nkind = \"wheel\"\nname = \"right\"\nposition = [2, 4]\n" +
+                             "radius = " + scriptNumber(r2) + "\n[[item]]\nkind = \"wheel\"\nname = \"spare\"\n" +
+                             "position = [0, 7]\n[[item]]\nkind = \"belt\"\nname = \"strap\"\nposition = [0, 4]\n" +
+                             "from = \"left\"\nto = \"right\"\n"),
+                       "kit.toml", kFrame);
+    Hand hand{editor};
+    const double cosPhi = (r1 - r2) / one.distance(two), sinPhi = std::sqrt(1.0 - cosPhi * cosPhi);
+    for (const double side : {1.0, -1.0}) {
+        INFO("run " << side << ", r1 " << r1 << ", r2 " << r2);
+        const Vec2 n{cosPhi, side * sinPhi};
+        const Vec2 middle = ((one + n * r1) + (two + n * r2)) * 0.5;
+        hand.at(middle);
+        pressE(hand);
+        CHECK_THAT(editor.message(), Catch::StartsWith("strap from ("));
+        hand.press(Key::escape);
+    }
+    // Between the runs, nearer neither, the belt is not what is pointed at.
+    hand.at({0.0, 4.0});
+    pressE(hand);
+    CHECK_THAT(editor.message(), !Catch::StartsWith("strap"));
+    hand.press(Key::escape);
+
+    // E on the top run moves its end to the spare wheel: the level then runs it there.
+    const Vec2 n{cosPhi, sinPhi};
+    hand.at(((one + n * r1) + (two + n * r2)) * 0.5);
+    pressE(hand);
+    hand.press(Key::tab);
+    CHECK_THAT(editor.message(), Catch::StartsWith("strap to ("));
+    retype(hand, "\"spare\"");
+    hand.press(Key::enter);
+    const SceneDesc saved = readBack(editor);
+    const ItemDesc& belt = saved.level.items[static_cast<std::size_t>(saved.level.find("strap"))];
+    const ItemBodies joined = belt.kind->bodies(belt);
+    REQUIRE(joined.joints.size() == 1);
+    CHECK(joined.joints[0].gearItemA == "left");
+    CHECK(joined.joints[0].gearItemB == "spare");
+}

@@ -195,7 +195,8 @@ EditSession::Hit EditSession::hitAtCursor() const {
     }
     const std::vector<ItemDesc>& items = state_.level.level.items;
     for (std::size_t i = items.size(); i-- > 0;)
-        if (items[i].kind->picked(items[i], items[i].position, cursorWorld_, tolerance)) return {Hit::What::item, i};
+        if (items[i].kind->pickedInLevel(items[i], state_.level.level, cursorWorld_, tolerance))
+            return {Hit::What::item, i};
     const std::vector<Zone>& zones = state_.level.level.zones;
     for (std::size_t i = zones.size(); i-- > 0;) {
         const Aabb& box = zones[i].box;

@@ -30,6 +30,7 @@ class PartKind;
 class LevelRun;
 class TableReader;
 struct SceneReading;
+struct LevelDesc;
 struct ItemState;
 enum class ActionKind : std::uint8_t;
 
@@ -195,6 +196,11 @@ public:
     virtual Aabb extent(const ItemDesc& item) const;
     /// True when the cursor at `cursor` (with `tolerance` to spare) is on the item, which is at `at` now.
     virtual bool picked(const ItemDesc& item, Vec2 at, Vec2 cursor, double tolerance) const;
+    /// The same in a level being edited, where the item stands as `level` places it: a part drawn
+    /// between other items (a belt on its wheels) looks them up there. By default picked() at its position.
+    virtual bool pickedInLevel(const ItemDesc& item, const LevelDesc& level, Vec2 cursor, double tolerance) const {
+        return (void)level, picked(item, item.position, cursor, tolerance);
+    }
     /// The kinematic [[path]] it follows, or -1.
     virtual int path(const ItemDesc& item) const { return (void)item, -1; }
     /// True when `point` is inside it (a bucket: between its walls, below their tops).

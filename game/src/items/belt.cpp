@@ -3,13 +3,40 @@
 // theta1 - (r2 / r1) theta2 = constant, so the rims move together. It has no body of its own.
 #include "part_common.hpp"
 
+#include "rube/physics/collision.hpp"
+
 #include <cmath>
+#include <optional>
+#include <vector>
 #include <tuple>
 
 namespace rube::game::parts {
 namespace {
 
 constexpr double kMarkSpacing = 0.3; // m between the marks that show the belt running
+constexpr double kRunReach = 0.05;   // m either side of a run that picks the belt in the editor
+
+// A straight run of the belt: from the first wheel's rim to the second's.
+struct BeltRun {
+    Vec2 from, to;
+};
+
+// The two outer tangents of wheels (one, r1) and (two, r2), the runs a crossed-free belt lies on;
+// none when one wheel is inside the other. With u the unit vector between the centres and
+// c = (r1 - r2) / d, each tangent's normal is n = c u +- sqrt(1 - c^2) u_perp, touching at centre + r n.
+std::vector<BeltRun> beltRuns(Vec2 one, double r1, Vec2 two, double r2) {
+    const Vec2 between = two - one;
+    const double distance = between.length();
+    if (distance <= std::abs(r1 - r2)) return {};
+    const Vec2 u = between * (1.0 / distance);
+    const double c = (r1 - r2) / distance, s = std::sqrt(1.0 - c * c);
+    std::vector<BeltRun> runs;
+    for (const double side : {1.0, -1.0}) {
+        const Vec2 n = u * c + u.perpendicular() * (side * s);
+        runs.push_back({one + n * r1, two + n * r2});
+    }
+    return runs;
+}
 
 struct BeltParams {
     std::string from, to; // the wheels' names: the first drives, the second is driven
@@ -53,9 +80,26 @@ public:
         if (!p.from.empty() && p.from == p.to)
             reading.diag.error(p.toAt, "a belt must run between two wheels, not one");
     }
-    // It has no body to click: its wheels are picked instead.
+    // It has no body of its own: where only the item is known (a played level's items), its wheels
+    // are picked instead; in a level being edited, it is picked on its runs between the wheels.
     bool picked(const ItemDesc& item, Vec2 at, Vec2 cursor, double tolerance) const override {
         (void)item, (void)at, (void)cursor, (void)tolerance;
+        return false;
+    }
+    bool pickedInLevel(const ItemDesc& item, const LevelDesc& level, Vec2 cursor, double tolerance) const override {
+        const BeltParams& p = item.params.as<BeltParams>();
+        const int a = level.find(p.from), b = level.find(p.to);
+        if (a < 0 || b < 0) return false;
+        const auto rim = [&](int index) -> std::optional<CircleDef> {
+            const ItemDesc& wheel = level.items[static_cast<std::size_t>(index)];
+            const ItemBodies shapes = wheel.kind->bodies(wheel);
+            if (shapes.circles.empty()) return std::nullopt;
+            return shapes.circles.front();
+        };
+        const std::optional<CircleDef> one = rim(a), two = rim(b);
+        if (!one || !two) return false;
+        for (const BeltRun& run : beltRuns(one->position, one->radius, two->position, two->radius))
+            if (cursor.distance(closestPointOnSegment(cursor, run.from, run.to)) <= tolerance + kRunReach) return true;
         return false;
     }
     ItemBodies bodies(const ItemDesc& item) const override {
@@ -81,23 +125,18 @@ public:
         if (ca.isNull() || cb.isNull()) return;
         const Circle& one = world.circle(ca);
         const Circle& two = world.circle(cb);
-        const Vec2 between = two.position - one.position;
-        const double distance = between.length();
-        if (distance <= std::abs(one.radius - two.radius)) return;
-        const Vec2 u = between * (1.0 / distance);
-        const double c = (one.radius - two.radius) / distance, s = std::sqrt(1.0 - c * c);
         const double travelled = one.angle * one.radius; // how far the belt has run, m
         const render::Color mark = render::Palette::greybox()["rope"];
-        for (const double side : {1.0, -1.0}) {
-            // The outer tangent on this side; the belt runs along it one way on top, the other below.
-            const Vec2 n = u * c + u.perpendicular() * (side * s);
-            const Vec2 from = one.position + n * one.radius, to = two.position + n * two.radius;
-            const double length = from.distance(to);
-            if (length <= 0.0) continue;
-            const Vec2 along = (to - from) * (1.0 / length);
-            const double shift = std::fmod(side * travelled, kMarkSpacing);
-            for (double t = shift < 0.0 ? shift + kMarkSpacing : shift; t < length; t += kMarkSpacing)
-                d.list.circle(pt(from + along * t), 0.035f, {mark, mark, 0.0f});
+        double side = 1.0; // the first run goes one way, the second the other
+        for (const BeltRun& run : beltRuns(one.position, one.radius, two.position, two.radius)) {
+            const double length = run.from.distance(run.to);
+            if (length > 0.0) {
+                const Vec2 along = (run.to - run.from) * (1.0 / length);
+                const double shift = std::fmod(side * travelled, kMarkSpacing);
+                for (double t = shift < 0.0 ? shift + kMarkSpacing : shift; t < length; t += kMarkSpacing)
+                    d.list.circle(pt(run.from + along * t), 0.035f, {mark, mark, 0.0f});
+            }
+            side = -side;
         }
     }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {

@@ -2,9 +2,6 @@
 # Determinism across compilers and optimisation levels: builds `rube` with clang++ -O2 and
 # g++ -O0 beside the main build, runs every physics scene under each, and requires the traces
 # to be byte-identical to the main build's. -ffp-contract=off is what makes this hold.
-# The g++ -O0 tree is also the build without OSMesa (-DRUBE_OSMESA=OFF, issue 25), whose
-# renderer and screenshot tests tests/no_osmesa/run.sh builds and runs afterwards in the same
-# tree: the physics and the game are compiled once for both checks.
 #
 # usage: cross_build.sh SOURCE_DIR MAIN_BUILD_DIR WORK_DIR
 set -euo pipefail
@@ -21,7 +18,7 @@ build() { # name, compiler, build type, more cmake arguments...
 }
 
 command -v clang++ >/dev/null || { echo "cross_build: clang++ is not installed (run .ci/install-deps)" >&2; exit 1; }
-binaries=("$main_build/rube" "$(build clang-O2 clang++ Release)" "$(build gcc-O0 g++ Debug -DRUBE_OSMESA=OFF)")
+binaries=("$main_build/rube" "$(build clang-O2 clang++ Release)" "$(build gcc-O0 g++ Debug)")
 names=("main" "clang++ -O2" "g++ -O0")
 
 # Each scene under its own method, for a few simulated seconds; the small scenes under every method.

@@ -86,8 +86,9 @@ public:
     }
     /// Picked anywhere on the plank as it lies at the start, `tolerance` around it.
     bool picked(const ItemDesc& item, Vec2 at, Vec2 cursor, double tolerance) const override {
+        (void)at; // the editor passes the pivot, a run the plank's middle: the item says both
         const SeesawParams& p = item.params.as<SeesawParams>();
-        const Vec2 x = Vec2::fromAngle(item.angle), d = cursor - at;
+        const Vec2 x = Vec2::fromAngle(item.angle), d = cursor - plankCentre(item);
         return std::abs(d.dot(x)) <= 0.5 * p.length + tolerance &&
                std::abs(d.dot(x.perpendicular())) <= kHalfThickness + tolerance;
     }

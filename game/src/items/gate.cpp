@@ -93,19 +93,14 @@ public:
                std::abs(d.dot(x.perpendicular())) <= kHalfThickness + tolerance;
     }
     // Releases the latch (once: a released gate stays free).
-    void trigger(LevelRun& run, int item) const override {
-        const ItemState& state = run.states()[static_cast<std::size_t>(item)];
-        if (state.joints.empty() || state.joints.front().isNull()) return;
-        run.partWorld().setJointMotor(state.joints.front(), {});
-    }
+    void trigger(LevelRun& run, int item) const override { releaseLatch(run, item); }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The board is drawn with the bodies; here the hinge's post, lit while latched, and an arc
     // showing the way it opens and how far.
     void draw(const PartDrawing& d) const override {
         const ItemDesc& item = itemOf(d);
         const GateParams& p = item.params.as<GateParams>();
-        const ItemState& state = stateOf(d);
-        const bool latched = !state.joints.empty() && d.run.world().joint(state.joints.front()).def.motor.on();
+        const bool latched = firstMotorOn(d);
         constexpr int kArc = 12;
         render::Point arc[kArc + 1];
         for (int k = 0; k <= kArc; ++k)

@@ -116,18 +116,13 @@ public:
         return 2.0 * std::sqrt(4.0 * std::abs(g) * item.params.as<HammerParams>().length);
     }
     // Releases the latch (once: a released hammer swings free).
-    void trigger(LevelRun& run, int item) const override {
-        const ItemState& state = run.states()[static_cast<std::size_t>(item)];
-        if (state.joints.empty() || state.joints.front().isNull()) return;
-        run.partWorld().setJointMotor(state.joints.front(), {});
-    }
+    void trigger(LevelRun& run, int item) const override { releaseLatch(run, item); }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The handle and head are drawn with the bodies; here the bracket the pivot hangs on and its pin,
     // lit while latched.
     void draw(const PartDrawing& d) const override {
         const ItemDesc& item = itemOf(d);
-        const ItemState& state = stateOf(d);
-        const bool latched = !state.joints.empty() && d.run.world().joint(state.joints.front()).def.motor.on();
+        const bool latched = firstMotorOn(d);
         d.list.box(pt(item.position), {0.1f, 0.1f}, 0.0f, style("ground", "ground_outline"));
         d.list.circle(pt(item.position), static_cast<float>(kPinRadius),
                       style(latched ? "highlight" : "ground", "ground_outline"));

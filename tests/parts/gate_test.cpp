@@ -1,7 +1,9 @@
 // The gate (issue 22): a board on a hinge with angle limits [0, opens]. Over a range of impacts (two
-// balls at 2 to 10 m/s, from either side) its turn from shut never leaves the limits by more than
-// 2 degrees (the soft limit gives under a hard hit); a one-way gate lets a ball rolling from the
-// open side through and stops one from the other side; a latched gate stops both until released.
+// balls at 2 to 10 m/s, from either side; gates opening 90 and 45 degrees counter-clockwise and 90
+// clockwise) its turn from shut never leaves the limits by more than 3 degrees (the limit is soft: an
+// 8 kg ball at 10 m/s jammed under a 45-degree gate pushes it 1.99 degrees past, the worst measured;
+// 0.85 degrees the worst past shut); a one-way gate lets a ball rolling from the open side through
+// and stops one from the other side; a latched gate stops both until released.
 #include "level_run.hpp"
 #include "scene_file.hpp"
 
@@ -50,7 +52,7 @@ double turn(const LevelRun& run) {
 
 TEST_CASE("a gate's turn stays within its limits over a range of impacts, and it lets balls through one way only",
           "[parts][gate]") {
-    for (const double opens : {90.0, 45.0}) {
+    for (const double opens : {90.0, 45.0, -90.0}) {
         for (const Ball& ball : {kHeavy, kSteel}) {
             for (const double speed : {2.0, 5.0, 10.0}) {
                 for (const int side : {-1, 1}) {
@@ -63,14 +65,16 @@ TEST_CASE("a gate's turn stays within its limits over a range of impacts, and it
                         least = std::min(least, turn(run));
                         most = std::max(most, turn(run));
                     }
-                    CHECK(least >= -2.0);
-                    CHECK(most <= opens + 2.0);
+                    CHECK(least >= std::min(0.0, opens) - 3.0);
+                    CHECK(most <= std::max(0.0, opens) + 3.0);
                     const double x = run.world().circle(run.states()[1].circle).position.x;
                     // Through from the left when, opened as far as it goes, its bottom end (at the hinge's
                     // height less L cos opens) clears the ball's diameter: 1.3 m at 90 degrees, 0.45 m at 45,
                     // which the steel ball (0.4 m) passes under and the heavy one (0.6 m) does not.
+                    // A gate opening clockwise (opens < 0) is the mirror image: through from the right.
                     const double gap = kHingeY - kLength * std::cos(opens * std::numbers::pi / 180.0);
-                    if (side < 0 && gap > 2.0 * ball.radius) CHECK(x > 0.5);
+                    const int openSide = opens > 0.0 ? -1 : 1;
+                    if (side == openSide && gap > 2.0 * ball.radius) CHECK(x * side < -0.5);
                     else CHECK(x * side > 0.0); // stopped: still on its own side
                 }
             }

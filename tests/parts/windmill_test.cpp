@@ -7,6 +7,7 @@
 // without air; a belt may name it and turns its wheel at r_hub / r_wheel of its speed within 0.5 %.
 #include "level_run.hpp"
 #include "scene_file.hpp"
+#include "axle_momentum.hpp"
 #include "scene_number.hpp"
 
 #include <catch2/catch.hpp>
@@ -37,18 +38,8 @@ SceneDesc scene(double x0, double width, double speed, bool on = true) {
     return *load.scene;
 }
 
-// The angular momentum about the axle (the origin) of the hub and every blade:
-// L = sum (I omega + m r x v) (lecture 3), with I and m the inverses the world keeps.
-double angularMomentum(const World& world) {
-    double L = 0.0;
-    for (const Circle& c : world.circles())
-        if (c.motion == Motion::dynamic)
-            L += c.angularVelocity / c.inverseInertia + c.position.cross(c.velocity) / c.inverseMass;
-    for (const RigidBody& b : world.bodies())
-        if (b.motion == Motion::dynamic)
-            L += b.angularVelocity / b.inverseInertia + b.position.cross(b.velocity) / b.inverseMass;
-    return L;
-}
+// The angular momentum about the axle, the origin.
+double angularMomentum(const World& world) { return test::angularMomentumAbout(world, {0.0, 0.0}); }
 
 double spin(const LevelRun& run) { return run.world().circle(run.states()[0].circle).angularVelocity; }
 

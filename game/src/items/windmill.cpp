@@ -7,7 +7,9 @@
 // may name it and pass its turning on.
 #include "wheel_common.hpp"
 
-#include <array>
+#include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace rube::game::parts {
 namespace {

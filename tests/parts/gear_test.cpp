@@ -106,6 +106,6 @@ TEST_CASE("a gear's meshes names a wheel whose axle stands r1 + r2 + a tooth awa
     CHECK(firstError(load(one + two(apart + 0.3, "one"))) ==
           "gear-test.toml:13:10: gear meshes with 'one' 1.14 m away: meshed axles stand r1 + r2 + 0.08 = 0.84 m apart");
     CHECK(firstError(load(one + two(apart, "oen")))
-              .starts_with("gear-test.toml:13:10: unknown motor, wheel or gear 'oen'"));
+              .starts_with("gear-test.toml:13:10: unknown motor, wheel, gear, windmill or water-wheel 'oen'"));
     CHECK(firstError(load(one + two(apart, "two"))) == "gear-test.toml:13:10: a gear cannot mesh with itself");
 }

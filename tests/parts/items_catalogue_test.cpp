@@ -144,9 +144,12 @@ TEST_CASE("a radius or length key's written default is the size the kind's defau
             if (key.key == "radius")
                 CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(),
                                   [&](const CircleDef& c) { return near(c.radius, value); }));
-            else
-                CHECK(std::any_of(bodies.segments.begin(), bodies.segments.end(),
-                                  [&](const SegmentDef& s) { return near((s.b - s.a).length(), value); }));
+            else // a board's segment, or a rigid board's box (a seesaw's plank) end to end, or a
+                 // capsule (a hammer's handle) between its caps' centres
+                CHECK((std::any_of(bodies.segments.begin(), bodies.segments.end(),
+                                   [&](const SegmentDef& s) { return near((s.b - s.a).length(), value); }) ||
+                       std::any_of(bodies.rigidBodies.begin(), bodies.rigidBodies.end(),
+                                   [&](const RigidBodyDef& b) { return near(2.0 * b.halfExtents.x, value); })));
             ++checked;
         }
     }

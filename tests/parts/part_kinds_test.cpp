@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 #include <cstdlib>
 #include <fstream>
@@ -65,10 +66,16 @@ TEST_CASE("each kind's default item is of that kind, and its bodies and room lie
                 for (const SegmentDef& s : shapes.segments) CHECK((inside(s.a, s.radius) && inside(s.b, s.radius)));
             }
             // A kind picked by a click is picked at its own position: one with a circle or a segment,
-            // or with a rigid body there (a glove; a launcher's plunger starts pulled back from it).
+            // or with a rigid body over it (a glove; a gate's board from its hinge; a launcher's
+            // plunger starts pulled back from it).
             const ItemBodies room = kind->room(item);
-            const bool bodyThere = std::any_of(room.rigidBodies.begin(), room.rigidBodies.end(),
-                                               [&](const RigidBodyDef& b) { return b.position == item.position; });
+            const bool bodyThere = std::any_of(
+                room.rigidBodies.begin(), room.rigidBodies.end(), [&](const RigidBodyDef& b) {
+                    const Vec2 x = Vec2::fromAngle(b.angle), d = item.position - b.position;
+                    const double pad = b.shape == BodyShape::capsule ? b.halfExtents.y : 0.0;
+                    return std::abs(d.dot(x)) <= b.halfExtents.x + pad + 1e-12 &&
+                           std::abs(d.dot(x.perpendicular())) <= b.halfExtents.y + 1e-12;
+                });
             CHECK(kind->picked(item, item.position, item.position, 0.0) ==
                   (room.circles.size() + room.segments.size() > 0 || bodyThere));
         }

@@ -101,18 +101,13 @@ public:
         return p.pull * std::sqrt(p.stiffness / std::max(lightest, 1e-6)); // all of 1/2 k x^2 into the lightest
     }
     // Releases the latch (once: a released spring stays released).
-    void trigger(LevelRun& run, int item) const override {
-        const ItemState& state = run.states()[static_cast<std::size_t>(item)];
-        if (state.joints.empty() || state.joints.front().isNull()) return;
-        run.partWorld().setJointMotor(state.joints.front(), {});
-    }
+    void trigger(LevelRun& run, int item) const override { releaseLatch(run, item); }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The plunger, guide and spring are drawn with the bodies and joints; here the base the spring
     // stands on, lit while latched.
     void draw(const PartDrawing& d) const override {
         const ItemDesc& item = itemOf(d);
-        const ItemState& state = stateOf(d);
-        const bool latched = !state.joints.empty() && d.run.world().joint(state.joints.front()).def.motor.on();
+        const bool latched = firstMotorOn(d);
         const Vec2 base = item.position - axisOf(item) * kSpringBase;
         d.list.box(pt(base), {0.05f, static_cast<float>(0.3 * item.params.as<LauncherParams>().width)},
                    static_cast<float>(item.angle), style(latched ? "highlight" : "ground", "ground_outline"));

@@ -72,8 +72,7 @@ public:
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     void draw(const PartDrawing& d) const override {
-        const ItemState& state = stateOf(d);
-        const bool on = !state.joints.empty() && d.run.world().joint(state.joints.front()).def.motor.on();
+        const bool on = firstMotorOn(d);
         drawWheel(d, style("box", "box_outline"), on ? "highlight" : "ground");
     }
     void drawIcon(Vec2 centre, double size, bool available, render::DrawList& list) const override {

@@ -56,6 +56,22 @@ inline const ItemState& stateOf(const PartDrawing& d) { return d.run.states()[st
 /// The item in the run.
 inline const ItemDesc& itemOf(const PartDrawing& d) { return d.run.items()[static_cast<std::size_t>(d.item)]; }
 
+/// True while the item's first joint's motor is on: a latch holding (a launcher's guide, a gate's
+/// hinge, a hammer's pivot, each held by a motor at speed 0), a motor powered.
+inline bool firstMotorOn(const PartDrawing& d) {
+    const ItemState& state = stateOf(d);
+    return !state.joints.empty() && !state.joints.front().isNull() &&
+           d.run.world().joint(state.joints.front()).def.motor.on();
+}
+
+/// Releases a latch: turns the item's first joint's motor off, for good (a released spring, gate or
+/// hammer stays free).
+inline void releaseLatch(LevelRun& run, int item) {
+    const ItemState& state = run.states()[static_cast<std::size_t>(item)];
+    if (state.joints.empty() || state.joints.front().isNull()) return;
+    run.partWorld().setJointMotor(state.joints.front(), {});
+}
+
 /// A ball's first touch of `item` (a switch, scissors): marks it hit and reports the hit event; false
 /// when it was touched before, for only the first touch is news.
 inline bool firstTouch(LevelRun& run, int item, Vec2 point, const std::string& by) {

@@ -17,7 +17,8 @@ inline constexpr double kPaddleLength = 0.5;
 inline constexpr double kPaddleRadius = 0.06;
 /// A paddle's mass, kg.
 inline constexpr double kPaddleMass = 0.2;
-/// A paddle starts this far out from the axle, as a fraction of the disc's radius (inside the disc).
+/// A paddle starts this far out from the axle, as a fraction of the disc's radius (inside the disc),
+/// unless its neighbours would overlap there (wheelBodies).
 inline constexpr double kPaddleRoot = 0.3;
 
 /// A wheel's parameters.
@@ -60,7 +61,12 @@ inline ItemBodies wheelBodies(const ItemDesc& item, const WheelParams& p, JointM
     axle.b = {ItemJointEnd::To::circle, 0, {}};
     bodies.joints.push_back(axle);
     // Each paddle: a capsule from inside the disc to paddleLength past its rim, along its angle.
-    const double root = kPaddleRoot * p.radius, tip = p.radius + p.paddleLength;
+    // Each paddle is welded to the disc, not to its neighbours, so neighbours that overlapped at the
+    // root would collide: three or more start where neighbours' capsules clear each other,
+    // 2 root sin(pi / n) > 2 kPaddleRadius (and never past the middle of the paddle).
+    const double tip = p.radius + p.paddleLength;
+    const double clear = p.paddles > 2 ? 1.01 * kPaddleRadius / std::sin(std::numbers::pi / p.paddles) : 0.0;
+    const double root = std::min(std::max(kPaddleRoot * p.radius, clear), 0.5 * tip);
     for (int k = 0; k < p.paddles; ++k) {
         const double angle = item.angle + 2.0 * std::numbers::pi * k / p.paddles;
         const double middle = 0.5 * (root + tip);

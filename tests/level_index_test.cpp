@@ -1,6 +1,8 @@
 // levels/index.toml: every shipped level listed once, in a readable order, and the reader's errors.
 #include "level_folder.hpp"
 #include "level_index.hpp"
+#include "scene_file.hpp"
+#include "script_file.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -75,4 +77,29 @@ TEST_CASE("the level index reports bad entries at their place", "[index]") {
     REQUIRE(measured.levels);
     CHECK(measured.levels->front().solveBudget == 10);
     CHECK(measured.levels->front().solveFraction == 0.25);
+}
+
+// Issue 22: at least eight levels are chain reactions of five or more distinct parts. Counted here:
+// the levels the index rates 4 or 5 (hard chains; a hard level of few parts, such as paddle, is not
+// one) whose parts, the kinds of the level's items and of what its solution places (the ball that
+// starts it and the target it ends on count, as in the issue's example), number five or more.
+TEST_CASE("at least eight chain levels, each of five or more distinct part kinds", "[index]") {
+    const LevelIndexLoad load = loadLevelIndex(kLevels / "index.toml");
+    REQUIRE(load.levels);
+    int chains = 0;
+    for (const IndexedLevel& level : *load.levels) {
+        if (level.difficulty < 4) continue;
+        INFO(level.file.filename().string());
+        const SceneLoad scene = loadSceneFile(level.file);
+        REQUIRE(scene.ok());
+        std::set<std::string_view> kinds;
+        for (const ItemDesc& item : scene.scene->level.items) kinds.insert(item.kind->name());
+        fs::path solution = level.file;
+        solution.replace_extension(".solution.toml");
+        const ScriptLoad script = loadScriptFile(solution, *scene.scene);
+        REQUIRE(script.script);
+        for (const Placement& placed : script.script->placements) kinds.insert(placed.kind->name());
+        if (kinds.size() >= 5) ++chains;
+    }
+    CHECK(chains >= 8);
 }

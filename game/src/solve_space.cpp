@@ -114,7 +114,7 @@ std::uint32_t radix(const AxisRef& ref, const std::vector<KindAxis>& kinds, cons
 } // namespace
 
 SearchSpace::SearchSpace(const SceneDesc& level, const SpaceOptions& options)
-    : levelName_(level.name), timeStep_(level.world.timeStep) {
+    : levelName_(level.name) {
     const double dt = level.world.timeStep;
     steps_ = level.defaultSteps();
     if (level.level.goal && level.level.goal->timeLimit)

@@ -110,7 +110,6 @@ private:
     std::vector<double> subsetWeights_; // sizes as doubles, unsaturated
     std::uint64_t total_ = 0;
     std::int64_t steps_ = 0;
-    double timeStep_ = 0.0;
 };
 
 } // namespace rube::game

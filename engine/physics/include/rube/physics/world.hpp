@@ -292,6 +292,9 @@ private:
     Circle& circleState(CircleId id);
     RigidBody& bodyState(BodyId id);
     void wakeCircle(const Circle& c);
+    void wakeBody(const RigidBody& b);
+    void wakeIsland(int island);      ///< every asleep circle and rigid body of `island` (SleepState::island)
+    void wakeEnds(const JointDef& d); ///< the islands of a joint's ends (a gear's: its joints' ends)
     void wakeNear(const Segment& s);
     void remapSlots(const SlotRemap& remap);
     void leaveCircle(int entry);

@@ -266,3 +266,19 @@ TEST_CASE("rigid sleep: deterministic, the same state hash run twice", "[sleep][
     };
     CHECK(run() == run());
 }
+
+TEST_CASE("rigid sleep: removing what a sleeping stack rests on wakes it, and it falls", "[sleep][rigid]") {
+    const int height = GENERATE(2, 4);
+    World world(solverDef());
+    addFloor(world);
+    std::vector<BodyId> stack;
+    for (int k = 0; k < height; ++k) stack.push_back(world.addBody(box({0.0, 0.5 + k}, {0.5, 0.5})));
+    REQUIRE(stepsToSleep(world, stack, 120) > 0);
+    world.remove(stack.front());
+    stack.erase(stack.begin());
+    CHECK(noneAsleep(world, stack));
+    // Free fall of 1 m takes sqrt(2 h / g) = 0.45 s: a second later the stack stands on the floor.
+    for (int s = 0; s < 60; ++s) world.step();
+    for (std::size_t k = 0; k < stack.size(); ++k)
+        CHECK(world.body(stack[k]).position.y == Approx(0.5 + static_cast<double>(k)).margin(0.02));
+}

@@ -44,15 +44,16 @@ constexpr Expected kExpected[] = {
     {"ball-stack", "exact", 240, 0x6c62daf334dca0a7ull},
     {"islands", "", 240, 0x8fad8bc38c32b5ccull}, // auto per island: exact and the solver in one step
     // Joints (issue 21), each scene under its own method (the solver), and gears under auto, which gives a
-    // world with joints wholly to the solver: the same hash.
-    {"gears", "", 240, 0x15c5fd1abf960eecull},
+    // world with joints wholly to the solver: the same motion, but only the solver lets rigid bodies and
+    // joints' islands sleep (issue 26), so the hashes differ by the sleep state the solver counts.
+    {"gears", "", 240, 0xd9dd079cf331115dull},
     {"gears", "auto", 240, 0x15c5fd1abf960eecull},
-    {"belt", "", 240, 0xb0caca793f162d80ull},
-    {"pulley", "", 240, 0x0095d7d34f527a75ull},
-    {"springs", "", 240, 0x54f1b1965a877d96ull},
-    {"piston", "", 240, 0xa56940053848d244ull},
-    {"weld", "", 240, 0x001e295bb8af842bull},
-    {"chain", "", 240, 0xd3c9e33f94f6ed44ull},
+    {"belt", "", 240, 0x486aab54b7e1aeb5ull},
+    {"pulley", "", 240, 0x3140591403e6c9b8ull},
+    {"springs", "", 240, 0x5ee75383a323dec0ull},
+    {"piston", "", 240, 0xf63f13cb912ccb1dull},
+    {"weld", "", 240, 0x73b6fcd86315164bull},
+    {"chain", "", 240, 0x303997cb4a75b424ull},
 };
 
 std::uint64_t runAndHash(const Expected& e) {

@@ -185,8 +185,9 @@ int main(int argc, char** argv) {
         for (const auto& engine : engines) {
             if (!scaling || !runsInScaling(engine)) continue;
             sceneEngines.push_back(engine);
-            // Rigid bodies never sleep yet, so for boxes the awake variant would only repeat the run.
-            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep && !scene.boxes)
+            // Boxes sleep too (issue 26): an exactly stacked pyramid is asleep after timeToSleep, so
+            // the boxes' sweep needs the awake variant as much as the piles' does.
+            if (engine.kind == bench::EngineKind::rubeMethod && options.rubeSleep)
                 sceneEngines.push_back(awakeVariant(engine));
         }
         for (const auto& engine : scaling ? sceneEngines : engines) {
@@ -226,8 +227,8 @@ int main(int argc, char** argv) {
                     break;
                 }
                 if (row.timeout) timedOut = row;
-                std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step  error %-12.4g %s%s\n", scene.name.c_str(),
-                             engine.name.c_str(), rate, row.msPerStep,
+                std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step (last 1 s %9.4f)  error %-12.4g %s%s\n",
+                             scene.name.c_str(), engine.name.c_str(), rate, row.msPerStep, row.msPerStepLastSecond,
                              row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
                              row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                 rows.push_back(row);

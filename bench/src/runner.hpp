@@ -26,6 +26,9 @@ struct Row {
     double timeStep = 0.0;
     int bodies = 0, steps = 0, repeats = 0;
     double msPerStep = 0.0, usPerBodyStep = 0.0, msPerSimSecond = 0.0;
+    /// The same median clock over the last simulated second's steps alone: what a scene costs once
+    /// it has settled (asleep, where the engine sleeps), beside msPerStep's whole run.
+    double msPerStepLastSecond = 0.0;
     Metrics metrics;
     std::int64_t capsHit = 0;
     int escapes = 0;

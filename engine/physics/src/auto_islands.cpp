@@ -56,11 +56,6 @@ BoundingBox segmentReach(const Segment& s, double dt) {
     return fattened(sweptPoints(s.a, s.b, s.velocity * dt), s.radius);
 }
 
-// The radius of the circle about the centre that holds a rigid body at every angle.
-double boundingRadius(const RigidBody& b) {
-    return b.shape == BodyShape::capsule ? b.halfExtents.x + b.halfExtents.y : b.halfExtents.length();
-}
-
 } // namespace
 
 int AutoIslands::find(std::vector<int>& parent, int node) {

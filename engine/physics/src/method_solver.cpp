@@ -71,7 +71,7 @@ public:
         // Sleepers that something reached wake before anything is solved, and the contacts are found
         // again with them moving (each pass wakes at least one island, so this ends).
         while (ctx.sleep && sleep_.wakeReached(ctx.circles, ctx.segments, pairs_, margins_, circleBoxes_, segmentBoxes_,
-                                               bulletPaths(dt))) {
+                                               bulletPaths(dt), rigidSleep(ctx))) {
             prepareBodies(ctx, dt);
             findContacts(ctx, dt);
         }
@@ -83,6 +83,7 @@ public:
     }
     bool integratesRotation() const override { return true; }
     bool keepsSleep() const override { return true; }
+    bool keepsRigidSleep() const override { return true; }
     void remapSlots(const SlotRemap& remap) override {
         cache_.remap(remap);
         rigid_.remapSlots(remap);
@@ -97,6 +98,10 @@ private:
     void markWarmContacts();
     void flyFreeCirclesExactly(const StepContext& ctx, double dt);
     std::span<const BoundingBox> bulletPaths(double dt);
+    RigidSleepInput rigidSleep(const StepContext& ctx) const {
+        if (!hasRigid_) return {};
+        return {ctx.bodies, rigid_.contacts(), ctx.joints, ctx.pivots, rigid_.reached()};
+    }
 
     int circleCount_ = 0;
     int segmentCount_ = 0;
@@ -456,7 +461,7 @@ void SolverMethod::finish(StepContext& ctx, double dt) {
     ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, impacts);
     if (ctx.sleep)
         sleep_.update(ctx.circles, ctx.segments, contacts_, dt, ctx.def.sleepSpeed, ctx.def.timeToSleep,
-                      ctx.def.gravity);
+                      ctx.def.gravity, rigidSleep(ctx));
 }
 
 } // namespace

@@ -69,12 +69,13 @@ inline LoadedBody load(const RigidSolverView& view, BodySide side) {
     LoadedBody l{b.velocity, 0.0, b.displacement, {1.0, 0.0}, 0.0, 0.0};
     if (i < view.circles.size()) {
         const Circle& c = view.circles[i];
-        if (c.motion == Motion::dynamic) l.inverseMass = c.inverseMass;
+        const bool movable = c.motion == Motion::dynamic && !c.sleep.asleep; // an asleep circle is fixed
+        if (movable) l.inverseMass = c.inverseMass;
         // A circle's contact point stays where the normal meets its surface however it turns, so
         // its turn never moves an anchor; only its spin enters the point's velocity.
         if (!view.omega.empty()) {
             l.omega = view.omega[i];
-            if (c.motion == Motion::dynamic) l.inverseInertia = c.inverseInertia;
+            if (movable) l.inverseInertia = c.inverseInertia;
         }
     }
     return l;

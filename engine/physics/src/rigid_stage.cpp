@@ -41,11 +41,6 @@ BoundingBox boundsOf(const RoundedPolygon& p, double extra) {
     return {b.min - grow, b.max + grow};
 }
 
-/// The farthest any point of the body lies from its centre.
-double extent(const RigidBody& b) {
-    return b.shape == BodyShape::box ? b.halfExtents.length() : b.halfExtents.x + b.halfExtents.y;
-}
-
 } // namespace
 
 void RigidStage::prepare(const StepContext& ctx, double dt) {
@@ -68,7 +63,8 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& b = ctx.bodies[i];
-        const bool dynamic = b.motion == Motion::dynamic && b.inverseMass > 0.0;
+        // An asleep body is fixed for the step: no gravity, and contacts only with awake bodies (which wake it).
+        const bool dynamic = b.motion == Motion::dynamic && b.inverseMass > 0.0 && !b.sleep.asleep;
         RigidState& s = states_[i];
         s = RigidState{};
         s.velocity = b.motion == Motion::fixed ? Vec2{} : b.velocity;
@@ -81,7 +77,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
         startVelocity_[i] = s.velocity;
         startOmega_[i] = s.omega;
         // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
-        reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * extent(b)) * dt +
+        reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * boundingRadius(b)) * dt +
                     (dynamic ? gravityTravel : 0.0);
         shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
     }
@@ -101,6 +97,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
 
 void RigidStage::findContacts(const StepContext& ctx, double dt) {
     contacts_.clear();
+    reached_.clear();
     const auto& bodies = ctx.bodies;
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     const std::size_t n = bodies.size();
@@ -138,6 +135,28 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                              ma.bounciness * mb.bounciness));
     };
+    // Sleepers: a contact with an awake body, or a moving kinematic body's box, reaches them.
+    const auto asleep = [&](std::size_t i) { return bodies[i].sleep.asleep; };
+    const auto circleAsleep = [&](std::size_t c) { return ctx.circles[c].sleep.asleep; };
+    const auto moving = [](Motion motion, Vec2 v, double omega) {
+        return motion == Motion::kinematic && (v != Vec2{} || omega != 0.0);
+    };
+    bool anyAwake = false, anyAsleep = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        anyAwake = anyAwake || isDynamic(i) || moving(bodies[i].motion, bodies[i].velocity, bodies[i].angularVelocity);
+        anyAsleep = anyAsleep || asleep(i);
+    }
+    for (const Circle& c : ctx.circles) {
+        anyAwake = anyAwake || (c.motion == Motion::dynamic && c.inverseMass > 0.0 && !c.sleep.asleep) ||
+                   moving(c.motion, c.velocity, 0.0);
+        anyAsleep = anyAsleep || c.sleep.asleep;
+    }
+    // Model no more than the scene needs: with every body asleep or fixed, no pair can act or wake
+    // anything but a moving kinematic segment (below), so a sleeping scene pays no pair search.
+    if (!anyAwake) {
+        if (anyAsleep) reachBySegments(ctx, dt);
+        return;
+    }
     // Circles by the box they may reach this step; the broadphase lists the pairs whose boxes overlap in
     // the order the double loop over bodies, then circles, visited them, so contacts keep their order.
     circleBoxes_.resize(ctx.circles.size());
@@ -159,17 +178,39 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const auto other = static_cast<std::size_t>(pairs_[next].other);
             if (other < n) {
                 const std::size_t j = other;
-                if (!isDynamic(i) && !isDynamic(j)) continue;
+                if (!isDynamic(i) && !isDynamic(j)) {
+                    // Neither moves under the solver: a moving kinematic body still reaches a sleeper.
+                    const RigidBody& bj = bodies[j];
+                    if (asleep(i) && moving(bj.motion, bj.velocity, bj.angularVelocity))
+                        reached_.push_back(-1 - static_cast<int>(i));
+                    if (asleep(j) && moving(bi.motion, bi.velocity, bi.angularVelocity))
+                        reached_.push_back(-1 - static_cast<int>(j));
+                    continue;
+                }
+                const std::size_t before = contacts_.size();
                 add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j],
                     reach_[i] + reach_[j], bi.material, bodies[j].material);
+                if (contacts_.size() == before) continue;
+                if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
+                if (asleep(j)) reached_.push_back(-1 - static_cast<int>(j));
                 continue;
             }
             const std::size_t c = other - n;
             const Circle& circle = ctx.circles[c];
-            const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0;
-            if (!isDynamic(i) && !circleDynamic) continue;
+            const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0 && !circleAsleep(c);
+            if (!isDynamic(i) && !circleDynamic) {
+                if (asleep(i) && moving(circle.motion, circle.velocity, 0.0))
+                    reached_.push_back(-1 - static_cast<int>(i));
+                if (circleAsleep(c) && moving(bi.motion, bi.velocity, bi.angularVelocity))
+                    reached_.push_back(static_cast<int>(c));
+                continue;
+            }
+            const std::size_t before = contacts_.size();
             add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i],
                 makeRoundedPolygon(circle), reach_[i] + circleReach_[c], bi.material, circle.material);
+            if (contacts_.size() == before) continue;
+            if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
+            if (circleAsleep(c)) reached_.push_back(static_cast<int>(c));
         }
         if (!isDynamic(i)) continue;
         for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
@@ -180,6 +221,19 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a, shapes_[i], shape,
                 reach_[i] + reach, bi.material, seg.material);
         }
+    }
+    if (anyAsleep) reachBySegments(ctx, dt);
+}
+
+void RigidStage::reachBySegments(const StepContext& ctx, double dt) {
+    // A moving kinematic segment (a paddle, a lift) reaches an asleep rigid body its swept box meets.
+    for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
+        const Segment& seg = ctx.segments[s];
+        if (seg.motion() != Motion::kinematic || (seg.velocity == Vec2{} && seg.angularVelocity == 0.0)) continue;
+        const double turn = std::abs(seg.angularVelocity) * (seg.b - seg.a).length() * dt;
+        const BoundingBox box = boundsOf(makeRoundedPolygon(seg), seg.velocity.length() * dt + turn);
+        for (std::size_t i = 0; i < ctx.bodies.size(); ++i)
+            if (ctx.bodies[i].sleep.asleep && boxes_[i].overlaps(box)) reached_.push_back(-1 - static_cast<int>(i));
     }
 }
 
@@ -231,7 +285,7 @@ void RigidStage::finish(StepContext& ctx) const {
     ctx.stats.speedClamps += clamps_;
     for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
         RigidBody& b = ctx.bodies[i];
-        if (b.motion == Motion::fixed) continue;
+        if (b.motion == Motion::fixed || b.sleep.asleep) continue;
         const RigidState& s = states_[i];
         b.position = startPosition_[i] + s.displacement;
         b.angle += s.turn;

@@ -55,11 +55,18 @@ public:
     /// at its time of impact and bounced there; returns the impacts recorded (rigid_sweep.cpp).
     int sweep(StepContext& ctx, double dt);
 
+    /// The step's rigid contacts (for the sleeping islands, after the step).
+    std::span<const RigidContact> contacts() const { return contacts_; }
+    /// Sleepers that an awake dynamic body's contacts, or a moving kinematic body's box, reach this
+    /// step: circle c as c, rigid body i as -1 - i (SleepIslands::wakeReached wakes their islands).
+    std::span<const int> reached() const { return reached_; }
+
     /// An axis-aligned bounding box, for the pair test.
     using Box = BoundingBox;
 
 private:
     void findContacts(const StepContext& ctx, double dt);
+    void reachBySegments(const StepContext& ctx, double dt);
     /// After restitution: a body whose every contact is with something fixed keeps at most the energy
     /// it began the step with; restitution's extra velocity is scaled back to that (rigid_energy.cpp).
     void capBounceEnergy();
@@ -97,6 +104,7 @@ private:
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_;
+    std::vector<int> reached_;
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;
     JointStage joints_;

@@ -24,28 +24,94 @@ bool movingKinematic(const Segment& s) {
     return s.motion() == Motion::kinematic && (s.velocity != Vec2{} || s.angularVelocity != 0.0);
 }
 
+bool movingKinematic(const RigidBody& b) {
+    return b.motion == Motion::kinematic && (b.velocity != Vec2{} || b.angularVelocity != 0.0);
+}
+
+bool dynamicBody(const RigidBody& b) { return b.motion == Motion::dynamic && b.inverseMass > 0.0; }
+
+/// A running motor drives its island: it never sleeps (a motor at speed 0 only brakes, and may).
+bool drives(const Joint& j) { return j.def.motor.on() && j.def.motor.speed != 0.0; }
+
+/// Calls f(node) for each end of joint j that is a circle or rigid body (nodes: circles, then bodies);
+/// a gear's ends are those of the two joints it couples (World::joints() slots, as `joints`).
+template <class F>
+void forEachEnd(std::span<const Joint> joints, const Joint& j, int circleCount, F f) {
+    if (j.circleA >= 0) f(j.circleA);
+    if (j.bodyA >= 0) f(circleCount + j.bodyA);
+    if (j.circleB >= 0) f(j.circleB);
+    if (j.bodyB >= 0) f(circleCount + j.bodyB);
+    for (const int coupled : {j.jointA, j.jointB})
+        if (coupled >= 0 && static_cast<std::size_t>(coupled) < joints.size() &&
+            &joints[static_cast<std::size_t>(coupled)] != &j)
+            forEachEnd(std::span<const Joint>{}, joints[static_cast<std::size_t>(coupled)], circleCount, f);
+}
+
 } // namespace
 
-void wakeAll(std::span<Circle> circles) {
+void wakeAll(std::span<Circle> circles, std::span<RigidBody> bodies) {
     for (Circle& c : circles)
         if (c.sleep.asleep) wake(c);
+    for (RigidBody& b : bodies)
+        if (b.sleep.asleep) b.sleep = SleepState{};
 }
 
 bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segment> segments,
                                std::span<const CandidatePair> pairs, std::span<const double> margins,
                                std::span<const BoundingBox> circleBoxes, std::span<const BoundingBox> segmentBoxes,
-                               std::span<const BoundingBox> bulletPaths) {
+                               std::span<const BoundingBox> bulletPaths, const RigidSleepInput& rigid) {
     const int circleCount = static_cast<int>(circles.size());
+    const int bodyCount = static_cast<int>(rigid.bodies.size());
     asleep_.clear();
     for (int i = 0; i < circleCount; ++i)
         if (circles[static_cast<std::size_t>(i)].sleep.asleep) asleep_.push_back(i);
-    if (asleep_.empty()) return false;
+    asleepBodies_.clear();
+    for (int i = 0; i < bodyCount; ++i)
+        if (rigid.bodies[static_cast<std::size_t>(i)].sleep.asleep) asleepBodies_.push_back(i);
+    if (asleep_.empty() && asleepBodies_.empty()) return false;
     // Reached islands are marked first and woken in one pass at the end, so waking many islands
-    // costs one pass over the sleepers, not one per island.
+    // costs one pass over the sleepers, not one per island. An island is named by a circle's index,
+    // or by -1 - a body's when it has no circle.
     islandReached_.assign(static_cast<std::size_t>(circleCount), 0);
-    const auto reach = [&](int i) {
-        islandReached_[static_cast<std::size_t>(circles[static_cast<std::size_t>(i)].sleep.island)] = 1;
+    rigidIslandReached_.assign(static_cast<std::size_t>(bodyCount), 0);
+    const auto reachIsland = [&](int island) {
+        if (island >= 0) islandReached_[static_cast<std::size_t>(island)] = 1;
+        else rigidIslandReached_[static_cast<std::size_t>(-1 - island)] = 1;
     };
+    const auto reach = [&](int i) { reachIsland(circles[static_cast<std::size_t>(i)].sleep.island); };
+    const auto reachBody = [&](int i) { reachIsland(rigid.bodies[static_cast<std::size_t>(i)].sleep.island); };
+    const auto islandReached = [&](int island) {
+        return island >= 0 ? islandReached_[static_cast<std::size_t>(island)] != 0
+                           : rigidIslandReached_[static_cast<std::size_t>(-1 - island)] != 0;
+    };
+    for (const int i : asleepBodies_) {
+        const RigidBody& b = rigid.bodies[static_cast<std::size_t>(i)];
+        if (b.velocity != Vec2{} || b.angularVelocity != 0.0) reachBody(i);
+    }
+    for (const int node : rigid.reached) node >= 0 ? reach(node) : reachBody(-1 - node);
+    // A joint from an awake body or a moving one pulls its asleep end (both sleep together otherwise).
+    for (const Joint& j : rigid.joints) {
+        bool pulls = false, anyAsleep = false;
+        forEachEnd(rigid.joints, j, circleCount, [&](int node) {
+            if (node < circleCount) {
+                const Circle& c = circles[static_cast<std::size_t>(node)];
+                anyAsleep = anyAsleep || c.sleep.asleep;
+                pulls = pulls || (!c.sleep.asleep && c.motion == Motion::dynamic) || movingKinematic(c);
+            } else {
+                const RigidBody& b = rigid.bodies[static_cast<std::size_t>(node - circleCount)];
+                anyAsleep = anyAsleep || b.sleep.asleep;
+                pulls = pulls || (!b.sleep.asleep && dynamicBody(b)) || movingKinematic(b);
+            }
+        });
+        if (!pulls || !anyAsleep) continue;
+        forEachEnd(rigid.joints, j, circleCount, [&](int node) {
+            if (node < circleCount) {
+                if (circles[static_cast<std::size_t>(node)].sleep.asleep) reach(node);
+            } else if (rigid.bodies[static_cast<std::size_t>(node - circleCount)].sleep.asleep) {
+                reachBody(node - circleCount);
+            }
+        });
+    }
     // Pushed from outside: a sleeper's velocity and spin are exactly zero until something sets them.
     for (const int i : asleep_) {
         const Circle& c = circles[static_cast<std::size_t>(i)];
@@ -75,8 +141,14 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
     bool woke = false;
     for (const int i : asleep_) {
         Circle& c = circles[static_cast<std::size_t>(i)];
-        if (!islandReached_[static_cast<std::size_t>(c.sleep.island)]) continue;
+        if (!islandReached(c.sleep.island)) continue;
         wake(c);
+        woke = true;
+    }
+    for (const int i : asleepBodies_) {
+        RigidBody& b = rigid.bodies[static_cast<std::size_t>(i)];
+        if (!islandReached(b.sleep.island)) continue;
+        b.sleep = SleepState{};
         woke = true;
     }
     return woke;
@@ -89,6 +161,12 @@ int SleepIslands::find(int i) {
         i = parent_[static_cast<std::size_t>(i)];
     }
     return i;
+}
+
+void SleepIslands::join(int a, int b) {
+    const int ra = find(a), rb = find(b);
+    if (ra < rb) parent_[static_cast<std::size_t>(rb)] = ra;
+    else parent_[static_cast<std::size_t>(ra)] = rb;
 }
 
 void SleepIslands::HoldRays::offer(Vec2 up, Vec2 ray) {
@@ -112,14 +190,16 @@ bool SleepIslands::HoldRays::holds(Vec2 up, double push) const {
 }
 
 void SleepIslands::demoteUnheld(std::span<const Circle> circles, std::span<const Segment> segments,
-                                std::span<const ContactConstraint> contacts, Vec2 gravity) {
-    const double push = gravity.length();
-    if (push <= kUnheldAcceleration) return; // nothing pushes: whatever is slow is held
-    const Vec2 up = -gravity / push;
+                                std::span<const ContactConstraint> contacts, Vec2 gravity,
+                                const RigidSleepInput& rigid) {
+    const double g = gravity.length();
+    if (g <= kUnheldAcceleration) return; // nothing pushes: whatever is slow is held
+    const Vec2 up = -gravity / g;
     const std::size_t circleCount = circles.size();
-    normalRays_.assign(circleCount, HoldRays{});
-    coneRays_.assign(circleCount, HoldRays{});
-    holding_.assign(circleCount, 0);
+    const std::size_t nodeCount = circleCount + rigid.bodies.size();
+    normalRays_.assign(nodeCount, HoldRays{});
+    coneRays_.assign(nodeCount, HoldRays{});
+    holding_.assign(nodeCount, 0);
     // A contact can push when it pushed in the last substep or started the step overlapping. Its
     // normal pushes along n; with friction mu it can push anywhere within atan(mu) of n (Coulomb's cone).
     const auto offer = [&](int i, Vec2 n, double mu) {
@@ -145,23 +225,111 @@ void SleepIslands::demoteUnheld(std::span<const Circle> circles, std::span<const
         offer(c.a, c.normal, mu);
         if (otherIsCircle) offer(c.b, -c.normal, mu);
     }
+    // A rigid contact's normal runs from A to B: it pushes B along n and A against it, once per point
+    // that pushed in the last substep (a box flat on the floor has two).
+    const auto node = [&](BodySide side) {
+        return side.rigid ? firstSegment + side.index : side.index < firstSegment ? side.index : -1;
+    };
+    for (const RigidContact& c : rigid.contacts) {
+        const int a = node(c.a), b = node(c.b);
+        for (int k = 0; k < c.count; ++k) {
+            if (!(c.points[k].normalImpulse > 0.0)) continue;
+            if (a >= 0) offer(a, -c.normal, c.friction);
+            if (b >= 0) offer(b, c.normal, c.friction);
+        }
+    }
     // A circle on one contact rolls: friction there turns it rather than holding it (the contact force
     // must pass through the centre for the torque to vanish), so friction cones count from two
-    // contacts on, or for a circle that cannot turn.
-    for (std::size_t i = 0; i < circleCount; ++i) {
-        if (state_[i] != ready) continue;
-        const bool coneHolds = holding_[i] >= 2 || circles[i].inverseInertia == 0.0;
+    // contacts on, or for a body that cannot turn. A joint or pivot can pull any way: what it ends on is held.
+    for (std::size_t i = 0; i < nodeCount; ++i) {
+        if (state_[i] != ready || jointHeld_[i]) continue;
+        const bool isCircle = i < circleCount;
+        const double inverseInertia = isCircle ? circles[i].inverseInertia
+                                               : rigid.bodies[i - circleCount].inverseInertia;
+        const double push = isCircle ? g : g * std::abs(rigid.bodies[i - circleCount].gravityScale);
+        if (push <= kUnheldAcceleration) continue;
+        const bool coneHolds = holding_[i] >= 2 || inverseInertia == 0.0;
         if (normalRays_[i].holds(up, push) || (coneHolds && coneRays_[i].holds(up, push))) continue;
         state_[i] = awake;
     }
 }
 
+void SleepIslands::countSlowBodies(const RigidSleepInput& rigid, int circleCount, double dt, double sleepSpeed,
+                                   double timeToSleep, int& readyCount) {
+    const double limit2 = sleepSpeed * sleepSpeed;
+    for (std::size_t i = 0; i < rigid.bodies.size(); ++i) {
+        RigidBody& b = rigid.bodies[i];
+        if (!dynamicBody(b) || b.sleep.asleep) continue;
+        // Slow: the centre and every point's speed about it (omega times the bounding radius).
+        const double spin = b.angularVelocity * boundingRadius(b);
+        const bool slow = b.velocity.lengthSquared() < limit2 && spin * spin < limit2;
+        b.sleep.slowFor = slow ? b.sleep.slowFor + dt : 0.0;
+        const bool isReady = b.sleep.slowFor >= timeToSleep;
+        state_[static_cast<std::size_t>(circleCount) + i] = isReady ? ready : awake;
+        readyCount += isReady;
+    }
+    // Joints and pivots hold what they end on; a running motor keeps both its ends awake.
+    jointHeld_.assign(state_.size(), 0);
+    for (const Pivot& p : rigid.pivots)
+        if (p.body >= 0) jointHeld_[static_cast<std::size_t>(circleCount + p.body)] = 1;
+    for (const Joint& j : rigid.joints) {
+        const bool motor = drives(j);
+        forEachEnd(rigid.joints, j, circleCount, [&](int node) {
+            jointHeld_[static_cast<std::size_t>(node)] = 1;
+            std::uint8_t& s = state_[static_cast<std::size_t>(node)];
+            if (motor && s == ready) s = awake, --readyCount;
+        });
+    }
+}
+
+void SleepIslands::joinRigid(std::span<const Circle> circles, std::span<const Segment> segments,
+                             const RigidSleepInput& rigid) {
+    const int circleCount = static_cast<int>(circles.size());
+    const auto block = [&](int i) { blocked_[static_cast<std::size_t>(i)] = 1; };
+    // What a side is to the islands: a node, or something outside them that may carry it (kinematic).
+    const auto node = [&](BodySide side) {
+        return side.rigid ? circleCount + side.index : side.index < circleCount ? side.index : -1;
+    };
+    const auto carries = [&](BodySide side) {
+        if (side.rigid) return movingKinematic(rigid.bodies[static_cast<std::size_t>(side.index)]);
+        if (side.index < circleCount) return movingKinematic(circles[static_cast<std::size_t>(side.index)]);
+        return movingKinematic(segments[static_cast<std::size_t>(side.index - circleCount)]);
+    };
+    const auto link = [&](int a, int b, bool aCarries, bool bCarries) {
+        const std::uint8_t sa = a >= 0 ? state_[static_cast<std::size_t>(a)] : std::uint8_t{other};
+        const std::uint8_t sb = b >= 0 ? state_[static_cast<std::size_t>(b)] : std::uint8_t{other};
+        if (sa == ready && sb == ready) join(a, b);
+        else if (sa == ready && (sb == awake || bCarries)) block(a);
+        else if (sb == ready && (sa == awake || aCarries)) block(b);
+    };
+    for (const RigidContact& c : rigid.contacts) {
+        bool pushes = false;
+        for (int k = 0; k < c.count; ++k) pushes = pushes || c.points[k].normalImpulse > 0.0;
+        link(node(c.a), node(c.b), pushes && carries(c.a), pushes && carries(c.b));
+    }
+    // A joint ties its ends into one island; one end carried by a moving kinematic body keeps it awake.
+    const auto carrier = [&](int circle, int body) {
+        return (circle >= 0 && movingKinematic(circles[static_cast<std::size_t>(circle)])) ||
+               (body >= 0 && movingKinematic(rigid.bodies[static_cast<std::size_t>(body)]));
+    };
+    for (const Joint& j : rigid.joints) {
+        const bool carried = carrier(j.circleA, j.bodyA) || carrier(j.circleB, j.bodyB);
+        int first = -1;
+        forEachEnd(rigid.joints, j, circleCount, [&](int n) {
+            if (carried && state_[static_cast<std::size_t>(n)] == ready) block(n);
+            if (first < 0) first = n;
+            else link(first, n, false, false);
+        });
+    }
+}
+
 void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> segments,
                           std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep,
-                          Vec2 gravity) {
+                          Vec2 gravity, const RigidSleepInput& rigid) {
     const int circleCount = static_cast<int>(circles.size());
+    const int nodeCount = circleCount + static_cast<int>(rigid.bodies.size());
     const double limit2 = sleepSpeed * sleepSpeed;
-    state_.assign(static_cast<std::size_t>(circleCount), other);
+    state_.assign(static_cast<std::size_t>(nodeCount), other);
     // Per awake dynamic circle: slow, or slow but spinning (its surface's speed about the centre over
     // sleep_speed), or neither. A spin counts only where it can act: through a pushing contact with
     // friction. Spinning in place on a frictionless floor, a ball touches nothing its spin could turn
@@ -193,6 +361,15 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
             grip(c.a);
             if (c.b < firstSegment) grip(c.b);
         }
+        // A spinning circle pressed with friction against a rigid body turns it, or is turned by it.
+        for (const RigidContact& c : rigid.contacts) {
+            if (c.friction <= 0.0) continue;
+            bool pushes = false;
+            for (int k = 0; k < c.count; ++k) pushes = pushes || c.points[k].normalImpulse > 0.0;
+            if (!pushes) continue;
+            if (!c.a.rigid && c.a.index < circleCount) grip(c.a.index);
+            if (!c.b.rigid && c.b.index < circleCount) grip(c.b.index);
+        }
     }
     int readyCount = 0;
     for (int i = 0; i < circleCount; ++i) {
@@ -203,24 +380,25 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
         state_[static_cast<std::size_t>(i)] = isReady ? ready : awake;
         readyCount += isReady;
     }
-    // Model no more than the scene needs: islands are only built once some circle could sleep.
+    countSlowBodies(rigid, circleCount, dt, sleepSpeed, timeToSleep, readyCount);
+    // Model no more than the scene needs: islands are only built once some body could sleep.
     if (readyCount == 0) return;
     // Slow but not held (sliding down a shallow incline): awake, and its island with it.
-    demoteUnheld(circles, segments, contacts, gravity);
-    // An island sleeps when every member is ready and none is carried. So only ready circles are
-    // joined; a ready circle touching an awake one, or pushed by a moving kinematic body, blocks its
+    demoteUnheld(circles, segments, contacts, gravity, rigid);
+    // An island sleeps when every member is ready and none is carried. So only ready nodes are
+    // joined; a ready node touching an awake one, or pushed by a moving kinematic body, blocks its
     // whole island instead. Every contact counts, speculative ones too: a neighbour close enough to be
     // one would wake the island straight away (wakeReached), so it must sleep with it or not at all.
-    parent_.resize(static_cast<std::size_t>(circleCount));
-    for (int i = 0; i < circleCount; ++i) parent_[static_cast<std::size_t>(i)] = i;
-    blocked_.assign(static_cast<std::size_t>(circleCount), 0);
+    parent_.resize(static_cast<std::size_t>(nodeCount));
+    for (int i = 0; i < nodeCount; ++i) parent_[static_cast<std::size_t>(i)] = i;
+    blocked_.assign(static_cast<std::size_t>(nodeCount), 0);
     const auto block = [&](int i) { blocked_[static_cast<std::size_t>(i)] = 1; }; // folded into its root below
     for (const ContactConstraint& c : contacts) {
         const std::uint8_t a = state_[static_cast<std::size_t>(c.a)];
         if (a == other) continue;
         if (c.b < circleCount) {
             const std::uint8_t b = state_[static_cast<std::size_t>(c.b)];
-            if (a == ready && b == ready) parent_[static_cast<std::size_t>(find(c.a))] = find(c.b);
+            if (a == ready && b == ready) join(c.a, c.b);
             else if (a == ready && b == awake) block(c.a);
             else if (a == awake && b == ready) block(c.b);
             else if (a == ready && b == other && c.impulse > 0.0 &&
@@ -231,17 +409,28 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
             block(c.a);
         }
     }
-    for (int i = 0; i < circleCount; ++i)
+    if (!rigid.bodies.empty() || !rigid.joints.empty()) joinRigid(circles, segments, rigid);
+    for (int i = 0; i < nodeCount; ++i)
         if (blocked_[static_cast<std::size_t>(i)]) blocked_[static_cast<std::size_t>(find(i))] = 1;
-    for (int i = 0; i < circleCount; ++i) {
+    // An island is named by its lowest node (join keeps it the root): a circle's index when it has one.
+    for (int i = 0; i < nodeCount; ++i) {
         if (state_[static_cast<std::size_t>(i)] != ready) continue;
         const int root = find(i);
         if (blocked_[static_cast<std::size_t>(root)]) continue;
-        Circle& c = circles[static_cast<std::size_t>(i)];
-        c.velocity = {};
-        c.angularVelocity = 0.0;
-        c.sleep.asleep = true;
-        c.sleep.island = root;
+        const int island = root < circleCount ? root : -1 - (root - circleCount);
+        if (i < circleCount) {
+            Circle& c = circles[static_cast<std::size_t>(i)];
+            c.velocity = {};
+            c.angularVelocity = 0.0;
+            c.sleep.asleep = true;
+            c.sleep.island = island;
+        } else {
+            RigidBody& b = rigid.bodies[static_cast<std::size_t>(i - circleCount)];
+            b.velocity = {};
+            b.angularVelocity = 0.0;
+            b.sleep.asleep = true;
+            b.sleep.island = island;
+        }
     }
 }
 

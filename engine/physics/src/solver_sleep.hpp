@@ -1,21 +1,33 @@
 #pragma once
 // Internal: sleeping for the solver, as Box2D's islands do it. A pile that has come to rest costs
-// nothing: circles that stay slow (under WorldDef::sleepSpeed, their surfaces' spin too) for
-// WorldDef::timeToSleep together with every circle they touch are put to sleep as one island, with
-// zero velocity and spin, and the solver then treats them as fixed until something reaches them.
+// nothing: circles and rigid bodies that stay slow (under WorldDef::sleepSpeed, their surfaces' spin
+// too: a rigid body's omega times its bounding radius) for WorldDef::timeToSleep together with
+// everything they touch or a joint ties them to are put to sleep as one island, with zero velocity
+// and spin, and the solver then treats them as fixed until something reaches them.
 // Slow is not enough: a circle sleeps only while its contacts can hold it against gravity (the push
 // gravity gives it, less what its contact normals, and with two contacts or more their friction
-// cones, can cancel, is about zero), so a ball creeping down a shallow incline keeps sliding.
+// cones, can cancel, is about zero), so a ball creeping down a shallow incline keeps sliding. A rigid
+// body is held the same way by its contact points (a box on a slope steeper than its friction angle
+// is not); a body a joint or pivot ends on is held by it (a joint can pull any way), and an island
+// with a running motor (JointMotor on, speed not 0) never sleeps. A torque left over (a seesaw still
+// tipping) is not in the test: it turns the body faster than sleepSpeed within timeToSleep unless it
+// is smaller than sleepSpeed / (timeToSleep extent) per second squared, as in Box2D.
 //
 // What wakes an island, before the step solves anything:
 //   - a velocity or spin changed from outside (an explosion, a field, the game's balloons);
 //   - an awake dynamic circle near enough to be a candidate pair (its path's box for a bullet);
-//   - a moving kinematic body (path-driven circle or segment) whose swept box reaches it.
+//   - an awake rigid body, or a moving kinematic one, whose contacts reach it (RigidStage::reached);
+//   - a moving kinematic body (path-driven circle or segment) whose swept box reaches it;
+//   - a joint whose other end is awake (a joint added to it between steps).
 // A waking island starts slow from zero again. Sleeping changes nothing a settled scene shows: the
 // bodies it stops were slower than a centimetre a second and held where they were; only a drift
 // that nothing pushes (under 1 cm/s, on a level floor or in free flight) is stopped with them.
 
 #include "broadphase_grid.hpp"
+#include "rigid_contacts.hpp"
+#include "rube/physics/joint.hpp"
+#include "rube/physics/pivot.hpp"
+#include "rube/physics/rigid_body.hpp"
 #include "solver_soft_step.hpp"
 
 #include <cstdint>
@@ -24,8 +36,17 @@
 
 namespace rube {
 
-/// Wakes every asleep circle (a method that does not keep sleep is about to move them).
-void wakeAll(std::span<Circle> circles);
+/// Wakes every asleep circle and rigid body (a method that does not keep sleep is about to move them).
+void wakeAll(std::span<Circle> circles, std::span<RigidBody> bodies = {});
+
+/// The rigid part of the islands, empty in a world of circles only.
+struct RigidSleepInput {
+    std::span<RigidBody> bodies;
+    std::span<const RigidContact> contacts; ///< the step's rigid contacts (RigidStage::contacts)
+    std::span<const Joint> joints;
+    std::span<const Pivot> pivots;
+    std::span<const int> reached; ///< sleepers an awake or moving body's contacts reach: circle c, or -1 - body
+};
 
 /// The circles a step looks at to wake and put islands to sleep.
 class SleepIslands {
@@ -38,7 +59,8 @@ public:
     /// any island woke: the caller then finds the step's contacts again.
     bool wakeReached(std::span<Circle> circles, std::span<const Segment> segments, std::span<const CandidatePair> pairs,
                      std::span<const double> margins, std::span<const BoundingBox> circleBoxes,
-                     std::span<const BoundingBox> segmentBoxes, std::span<const BoundingBox> bulletPaths);
+                     std::span<const BoundingBox> segmentBoxes, std::span<const BoundingBox> bulletPaths,
+                     const RigidSleepInput& rigid);
 
     /// After the step: counts how long each awake dynamic circle has been slow, joins circles with a
     /// contact (speculative ones too) into islands, and puts to sleep every island that has been
@@ -46,7 +68,7 @@ public:
     /// not carried by a moving kinematic body.
     void update(std::span<Circle> circles, std::span<const Segment> segments,
                 std::span<const ContactConstraint> contacts, double dt, double sleepSpeed, double timeToSleep,
-                Vec2 gravity);
+                Vec2 gravity, const RigidSleepInput& rigid);
 
 private:
     /// The directions a circle's contacts can push it in, kept as the nearest to `up` on either side
@@ -58,18 +80,26 @@ private:
         bool holds(Vec2 up, double push) const;
     };
     int find(int i);
+    void join(int a, int b); // the lower root names the island, so one with a circle is named by a circle
     void demoteUnheld(std::span<const Circle> circles, std::span<const Segment> segments,
-                      std::span<const ContactConstraint> contacts, Vec2 gravity);
+                      std::span<const ContactConstraint> contacts, Vec2 gravity, const RigidSleepInput& rigid);
+    void countSlowBodies(const RigidSleepInput& rigid, int circleCount, double dt, double sleepSpeed,
+                         double timeToSleep, int& readyCount);
+    void joinRigid(std::span<const Circle> circles, std::span<const Segment> segments, const RigidSleepInput& rigid);
 
-    std::vector<int> parent_;            // union-find over the circles ready to sleep
-    std::vector<std::uint8_t> state_;    // per circle: other, awake or ready (update's enum)
+    // Nodes: the circles, then the rigid bodies (circle count + body index).
+    std::vector<int> parent_;            // union-find over the nodes ready to sleep
+    std::vector<std::uint8_t> state_;    // per node: other, awake or ready (update's enum)
     std::vector<std::uint8_t> slowness_; // scratch: per circle, moving, slow, or slow but spinning
     std::vector<std::uint8_t> blocked_; // per circle, then per root: touches an awake circle or a moving kinematic body
     std::vector<int> asleep_;           // scratch: the sleepers this step
+    std::vector<int> asleepBodies_;     // scratch: the rigid sleepers this step
     std::vector<std::uint8_t> islandReached_; // scratch: per island (a circle index), something reached it this step
+    std::vector<std::uint8_t> rigidIslandReached_; // scratch: per island named -1 - body, by body
+    std::vector<std::uint8_t> jointHeld_;          // scratch: per node, a joint or pivot ends on it
     std::vector<HoldRays> normalRays_,
-        coneRays_;             // scratch: per circle, what its contacts' normals, and friction cones, can push
-    std::vector<int> holding_; // scratch: per circle, its contacts that can push
+        coneRays_;             // scratch: per node, what its contacts' normals, and friction cones, can push
+    std::vector<int> holding_; // scratch: per node, its contact points that can push
 };
 
 } // namespace rube

@@ -47,7 +47,15 @@ std::uint64_t stateHash(const World& world) {
         mix(h, s.b.x);
         mix(h, s.b.y);
     }
-    for (const RigidBody& b : world.bodies()) mixMotion(h, b.position, b.velocity, b.angle, b.angularVelocity);
+    for (const RigidBody& b : world.bodies()) {
+        mixMotion(h, b.position, b.velocity, b.angle, b.angularVelocity);
+        // As the circles' sleep; a body never counted slow (every world before rigid bodies could
+        // sleep, and every method but the solver) hashes as it did then.
+        if (b.sleep.asleep || b.sleep.slowFor != 0.0) {
+            mix(h, b.sleep.asleep ? 1.0 : 0.0);
+            mix(h, b.sleep.slowFor);
+        }
+    }
     return h;
 }
 

@@ -27,7 +27,8 @@ struct StepContext {
         {}; ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
     std::span<const Joint> joints =
         {};             ///< the joints that act (the solver models them; auto gives their islands to it)
-    bool sleep = false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes or rigid bodies)
+    bool sleep =
+        false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes; rigid bodies: keepsRigidSleep)
 };
 
 /// A time-step method: advances every body over dt.
@@ -41,6 +42,9 @@ public:
     /// True when the method honours asleep circles (and wakes them itself); the world wakes every
     /// circle before a method that does not.
     virtual bool keepsSleep() const { return false; }
+    /// True when the method's islands take rigid bodies, pivots and joints too (the solver's); a
+    /// method that keeps only the circles' sleep is given no sleep in a world with any of them.
+    virtual bool keepsRigidSleep() const { return false; }
     /// Bodies left or (re)entered the world's arrays between steps: what the method keeps per body
     /// from step to step (warm starts, stints) follows them to their new slots (world_handles.hpp),
     /// so a world goes on as if what left had never been there.

@@ -210,12 +210,15 @@ void World::step() {
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     context.joints = joints_;
-    // Sleep is the solver's (auto's too): ropes and rigid bodies are not part of its islands, so
-    // their worlds keep every circle awake, as do methods that move every body anyway.
-    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && bodies_.empty() && joints_.empty() &&
-                    method_->keepsSleep();
-    // Only the solver puts circles to sleep, so a world that never let it pays no pass to wake them.
-    if (!context.sleep && mayHaveSleepers_) wakeAll(circles_);
+    // Sleep is the solver's (auto's too): ropes are not part of its islands, so their worlds keep every
+    // body awake, as do methods that move every body anyway. Rigid bodies, pivots and joints join the
+    // solver's islands (keepsRigidSleep); auto gives the solver only some islands, so with any of them
+    // it keeps everything awake.
+    const bool rigidWorld = !bodies_.empty() || !joints_.empty();
+    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && method_->keepsSleep() &&
+                    (!rigidWorld || method_->keepsRigidSleep());
+    // Only the solver puts bodies to sleep, so a world that never let it pays no pass to wake them.
+    if (!context.sleep && mayHaveSleepers_) wakeAll(circles_, bodies_);
     mayHaveSleepers_ = context.sleep;
     // Model no more than a scene needs: a world without ropes never enters either rope pass.
     const bool hasRopes = !ropes_.empty();

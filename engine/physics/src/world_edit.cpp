@@ -55,6 +55,13 @@ void World::wakeNear(const Segment& s) {
         const double t = l2 > 0.0 ? std::clamp((c.position - s.a).dot(ab) / l2, 0.0, 1.0) : 0.0;
         if (c.position.distance(s.a + ab * t) <= c.radius + s.radius + 0.01) wakeCircle(c);
     }
+    // A rigid body by the circle around it (its centre to its farthest point): a few more wake than
+    // touch, none that touches stays asleep.
+    for (const RigidBody& b : bodies_) {
+        if (!b.sleep.asleep) continue;
+        const double t = l2 > 0.0 ? std::clamp((b.position - s.a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+        if (b.position.distance(s.a + ab * t) <= boundingRadius(b) + s.radius + 0.01) wakeBody(b);
+    }
 }
 
 // ---- where slots went ----
@@ -79,21 +86,23 @@ void World::remapSlots(const SlotRemap& remap) {
                 finite_->bodyAngles[s] = bodies_[s].angle;
             }
     }
-    // A sleeping island is named by one of its circles' slots: by its new slot, or, when that circle
-    // left, by the new slot of the first member that stayed.
+    // A sleeping island is named by one of its circles' slots, or with no circle by -1 - one of its
+    // rigid bodies' slots: by that member's new slot, or, when it left, by the new slot of the first
+    // member that stayed (circles first, as islands are named).
     std::vector<std::pair<int, int>> orphans; // old island, its new name
-    for (std::size_t s = 0; s < circles_.size(); ++s) {
-        SleepState& sleep = circles_[s].sleep;
-        if (sleep.island < 0) continue;
+    const auto rename = [&](SleepState& sleep, int newName) {
+        if (!sleep.asleep) return;
         const int old = sleep.island;
-        int to = remap.circles(old);
-        if (to < 0) {
+        int to = old >= 0 ? remap.circles(old) : -1 - remap.bodies(-1 - old);
+        if (old >= 0 ? to < 0 : to >= 0) {
             auto it = std::find_if(orphans.begin(), orphans.end(), [&](const auto& o) { return o.first == old; });
-            if (it == orphans.end()) it = orphans.insert(orphans.end(), {old, static_cast<int>(s)});
+            if (it == orphans.end()) it = orphans.insert(orphans.end(), {old, newName});
             to = it->second;
         }
         sleep.island = to;
-    }
+    };
+    for (std::size_t s = 0; s < circles_.size(); ++s) rename(circles_[s].sleep, static_cast<int>(s));
+    for (std::size_t s = 0; s < bodies_.size(); ++s) rename(bodies_[s].sleep, -1 - static_cast<int>(s));
     // The last step's impacts name slots too: those of what left are dropped.
     std::vector<Impact> kept;
     for (Impact impact : impacts_) {
@@ -130,6 +139,8 @@ void World::leaveCircle(int entry) {
 void World::leaveBody(int entry) {
     HandleTable& table = tables_->bodies;
     const int slot = table.entry(entry).slot;
+    // Whatever slept on it wakes: it may have been resting on this one.
+    wakeBody(bodies_[static_cast<std::size_t>(slot)]);
     perEntry(tables_->parkedBodies, entry) = bodies_[static_cast<std::size_t>(slot)];
     perEntry(tables_->bodyEscaped, entry) = escapedBodies_[static_cast<std::size_t>(slot)];
     SlotRemap remap{identity(static_cast<int>(circles_.size())), identity(static_cast<int>(segments_.size())),
@@ -242,6 +253,7 @@ void World::remove(RopeId id) {
 
 void World::remove(PivotId id) {
     HandleTable::Entry& entry = tables_->pivots.at(id.index, id.generation, "pivot");
+    if (isValid(pivot(id).bodyId)) wakeBody(bodyState(pivot(id).bodyId)); // what it held may fall
     if (entry.enabled) {
         const int slot = entry.slot;
         tables_->pivots.leave(id.index);
@@ -315,6 +327,7 @@ void World::setEnabled(RopeId id, bool enabled) {
 void World::setEnabled(PivotId id, bool enabled) {
     tables_->pivots.at(id.index, id.generation, "pivot");
     tables_->pivotOn[static_cast<std::size_t>(id.index)] = enabled ? 1 : 0;
+    if (isValid(pivot(id).bodyId)) wakeBody(bodyState(pivot(id).bodyId));
     syncJoints();
 }
 

@@ -95,6 +95,7 @@ JointId World::addJoint(const JointDef& def) {
     perEntry(tables_->jointOn, entry) = 1;
     joints_.push_back(made);
     syncJoints();
+    wakeEnds(made.def); // a joint added to a sleeping island acts from the next step
     return handleOf<JointId>(tables_->joints, entry);
 }
 
@@ -108,6 +109,7 @@ void World::remove(JointId id) {
         if (d.kind == JointKind::gear && (d.jointA == id || d.jointB == id)) remove(JointId{e, entry.generation});
     }
     HandleTable::Entry& entry = tables_->joints.entry(id.index);
+    wakeEnds(joint(id).def); // what the joint held may fall
     if (entry.enabled) {
         const int slot = entry.slot;
         tables_->joints.leave(id.index);
@@ -130,7 +132,18 @@ void World::removeJointsOf(JointEnd end) {
 void World::setEnabled(JointId id, bool enabled) {
     tables_->joints.at(id.index, id.generation, "joint");
     tables_->jointOn[static_cast<std::size_t>(id.index)] = enabled ? 1 : 0;
+    wakeEnds(joint(id).def);
     syncJoints();
+}
+
+void World::wakeEnds(const JointDef& d) {
+    for (const JointEnd& end : {d.a, d.b}) {
+        if (!end.circle.isNull() && isValid(end.circle)) wakeCircle(circleState(end.circle));
+        if (!end.body.isNull() && isValid(end.body)) wakeBody(bodyState(end.body));
+    }
+    if (d.kind != JointKind::gear) return;
+    for (const JointId coupled : {d.jointA, d.jointB})
+        if (isValid(coupled)) wakeEnds(joint(coupled).def);
 }
 
 void World::setJointMotor(JointId id, const JointMotor& motor) {
@@ -143,9 +156,8 @@ void World::setJointMotor(JointId id, const JointMotor& motor) {
     def.motor = motor;
     checkDef(def);
     j.def.motor = motor;
-    // A sleeping wheel would not feel its motor: its island wakes (rigid bodies never sleep).
-    for (const JointEnd& end : {j.def.a, j.def.b})
-        if (!end.circle.isNull()) wakeCircle(circleState(end.circle));
+    // A sleeping wheel or plank would not feel its motor: its island wakes.
+    wakeEnds(j.def);
 }
 
 bool World::jointActs(const Joint& j) const {

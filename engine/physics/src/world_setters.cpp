@@ -1,5 +1,5 @@
 // World: setters between steps, and gravity scaled per body. A setter that changes a sleeping circle
-// wakes its island first (solver_sleep.hpp), so the change is seen by the next step.
+// or rigid body wakes its island first (solver_sleep.hpp), so the change is seen by the next step.
 #include "rube/physics/world.hpp"
 
 #include "world_handles.hpp"
@@ -18,11 +18,19 @@ RigidBody& World::bodyState(BodyId id) {
                      : tables_->parkedBodies[static_cast<std::size_t>(id.index)];
 }
 
-void World::wakeCircle(const Circle& c) {
-    if (!c.sleep.asleep) return;
-    const int island = c.sleep.island;
+void World::wakeIsland(int island) {
     for (Circle& other : circles_)
         if (other.sleep.asleep && other.sleep.island == island) other.sleep = SleepState{};
+    for (RigidBody& other : bodies_)
+        if (other.sleep.asleep && other.sleep.island == island) other.sleep = SleepState{};
+}
+
+void World::wakeCircle(const Circle& c) {
+    if (c.sleep.asleep) wakeIsland(c.sleep.island);
+}
+
+void World::wakeBody(const RigidBody& b) {
+    if (b.sleep.asleep) wakeIsland(b.sleep.island);
 }
 
 void World::setPosition(CircleId id, Vec2 position) {
@@ -33,7 +41,11 @@ void World::setPosition(CircleId id, Vec2 position) {
     c.position = position;
 }
 
-void World::setPosition(BodyId id, Vec2 position) { bodyState(id).position = position; }
+void World::setPosition(BodyId id, Vec2 position) {
+    RigidBody& b = bodyState(id);
+    wakeBody(b);
+    b.position = position;
+}
 
 void World::setVelocity(CircleId id, Vec2 velocity) {
     Circle& c = circleState(id);
@@ -44,7 +56,9 @@ void World::setVelocity(CircleId id, Vec2 velocity) {
 
 void World::setVelocity(BodyId id, Vec2 velocity) {
     RigidBody& b = bodyState(id);
-    if (b.motion != Motion::fixed) b.velocity = velocity;
+    if (b.motion == Motion::fixed) return;
+    wakeBody(b);
+    b.velocity = velocity;
 }
 
 void World::setAngularVelocity(CircleId id, double omega) {
@@ -56,7 +70,9 @@ void World::setAngularVelocity(CircleId id, double omega) {
 
 void World::setAngularVelocity(BodyId id, double omega) {
     RigidBody& b = bodyState(id);
-    if (b.motion != Motion::fixed && !b.fixedRotation) b.angularVelocity = omega;
+    if (b.motion == Motion::fixed || b.fixedRotation) return;
+    wakeBody(b);
+    b.angularVelocity = omega;
 }
 
 void World::applyImpulse(CircleId id, Vec2 impulse) {
@@ -68,11 +84,15 @@ void World::applyImpulse(CircleId id, Vec2 impulse) {
 
 void World::applyImpulse(BodyId id, Vec2 impulse) {
     RigidBody& b = bodyState(id);
+    if (b.inverseMass == 0.0) return;
+    wakeBody(b);
     b.velocity += impulse * b.inverseMass;
 }
 
 void World::applyImpulseAt(BodyId id, Vec2 impulse, Vec2 point) {
     RigidBody& b = bodyState(id);
+    if (b.inverseMass == 0.0 && b.inverseInertia == 0.0) return;
+    wakeBody(b);
     // Delta v = J / m, Delta omega = (r x J) / I with r from the centre of mass to the point.
     b.velocity += impulse * b.inverseMass;
     b.angularVelocity += (point - b.position).cross(impulse) * b.inverseInertia;
@@ -84,7 +104,11 @@ void World::setGravityScale(CircleId id, double scale) {
     c.gravityScale = scale;
 }
 
-void World::setGravityScale(BodyId id, double scale) { bodyState(id).gravityScale = scale; }
+void World::setGravityScale(BodyId id, double scale) {
+    RigidBody& b = bodyState(id);
+    wakeBody(b);
+    b.gravityScale = scale;
+}
 
 void World::setRadius(CircleId id, double radius) {
     Circle& c = circleState(id);
@@ -103,7 +127,7 @@ void World::applyGravityScales(double dt) {
         if (c.gravityScale != 1.0 && c.motion == Motion::dynamic && c.inverseMass > 0.0 && !c.sleep.asleep)
             c.velocity += def_.gravity * ((c.gravityScale - 1.0) * 0.5 * dt);
     for (RigidBody& b : bodies_)
-        if (b.gravityScale != 1.0 && b.motion == Motion::dynamic && b.inverseMass > 0.0)
+        if (b.gravityScale != 1.0 && b.motion == Motion::dynamic && b.inverseMass > 0.0 && !b.sleep.asleep)
             b.velocity += def_.gravity * ((b.gravityScale - 1.0) * 0.5 * dt);
 }
 

@@ -29,6 +29,9 @@ struct RigidBody {
     Motion motion = Motion::dynamic;
     bool fixedRotation = false; ///< lecture 3's block: stays axis-aligned
     double gravityScale = 1.0;  ///< how much of the world's gravity acts on it
+    /// Asleep (the solver only, WorldDef::sleepSpeed): its island is a circle's index when the island
+    /// holds a circle (as the circles' own), else -1 - the slot of one of its rigid bodies.
+    SleepState sleep;
 };
 
 /// What a caller fills in to add a rigid body; the default is a 1 kg dynamic 1 m x 1 m box.
@@ -46,6 +49,12 @@ struct RigidBodyDef {
     double gravityScale = 1.0;   ///< how much of the world's gravity acts on it (dynamic only)
     std::uint64_t userValue = 0; ///< the caller's own value (World::userValue)
 };
+
+/// The farthest any point of the body lies from its centre, m: the radius of the circle about the
+/// centre that holds it at every angle.
+inline double boundingRadius(const RigidBody& b) {
+    return b.shape == BodyShape::box ? b.halfExtents.length() : b.halfExtents.x + b.halfExtents.y;
+}
 
 /// True for lecture 3's block, a box that never turns (every method moves it); any other body turns,
 /// which only the solver models.

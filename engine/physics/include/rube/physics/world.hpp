@@ -53,7 +53,9 @@ struct WorldDef {
     AirDrag airDrag;             ///< drag of still air on every dynamic circle; none by default
     /// solver and auto: circles that, with everything they touch, stay under `sleepSpeed` (m/s, and
     /// their surfaces' spin) for `timeToSleep` seconds rest until something reaches them; 0 never.
-    /// Worlds with ropes or rigid bodies keep every circle awake.
+    /// The solver puts rigid bodies (omega times their bounding radius counted too), pivots and
+    /// joints in the same islands; auto keeps a world with rigid bodies or joints awake, and worlds
+    /// with ropes keep every body awake.
     double sleepSpeed = 0.01;
     double timeToSleep = 0.5; ///< seconds, see sleepSpeed
     /// solver and auto: the most a dynamic rigid body (box, capsule; not a circle, which the solver
@@ -292,6 +294,9 @@ private:
     Circle& circleState(CircleId id);
     RigidBody& bodyState(BodyId id);
     void wakeCircle(const Circle& c);
+    void wakeBody(const RigidBody& b);
+    void wakeIsland(int island);      ///< every asleep circle and rigid body of `island` (SleepState::island)
+    void wakeEnds(const JointDef& d); ///< the islands of a joint's ends (a gear's: its joints' ends)
     void wakeNear(const Segment& s);
     void remapSlots(const SlotRemap& remap);
     void leaveCircle(int entry);

@@ -194,7 +194,7 @@ TEST_CASE("rigid sleep: a sleeping seesaw wakes and tips when a ball lands on on
     CHECK(world.body(plank).angle < angle - 0.05);
 }
 
-TEST_CASE("rigid sleep: a running motor keeps its island awake; switched off it sleeps, on again it wakes",
+TEST_CASE("rigid sleep: a running motor keeps its island awake, switched off it sleeps, on again it wakes",
           "[sleep][rigid][joints]") {
     // A motor speed whose rim speed, omega times the bounding radius, is under sleepSpeed: slow
     // enough to sleep by speed alone, so only the motor rule keeps it awake.

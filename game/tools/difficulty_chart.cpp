@@ -19,12 +19,11 @@ namespace {
 
 using namespace rube;
 
-constexpr int kWidth = 960, kHeight = 600;
-constexpr float kLeft = 260, kRight = 900, kTop = 70, kBottom = 540; // the plot, pixels from the top-left
-constexpr double kDecades = 5;                                       // 1e-5 .. 1
-
-// A point given from the top-left, as the camera (world = pixels, y up) wants it.
-render::Point at(float x, float y) { return {x, static_cast<float>(kHeight) - y}; }
+constexpr int kWidth = 960;
+constexpr float kLeft = 260, kRight = 900, kTop = 70; // the plot, pixels from the top-left
+constexpr float kRow = 18;     // pixels a level: the labels' font (scale 2) is 14 high, so the chart grows with the levels
+constexpr float kMargin = 60;  // below the plot, for the axis' labels
+constexpr double kDecades = 5; // 1e-5 .. 1
 
 float barEnd(double fraction) {
     const double decades = std::clamp(std::log10(std::max(fraction, 1e-12)) + kDecades, 0.0, kDecades);
@@ -43,6 +42,11 @@ int main(int argc, char** argv) {
         std::cerr << index.errors.front().format() << '\n';
         return 2;
     }
+    const auto& levels = *index.levels;
+    const float bottom = kTop + kRow * static_cast<float>(levels.size());
+    const int height = static_cast<int>(bottom + kMargin);
+    // A point given from the top-left, as the camera (world = pixels, y up) wants it.
+    const auto at = [height](float x, float y) { return render::Point{x, static_cast<float>(height) - y}; };
     const render::Color ink{40, 40, 40, 255}, grid{170, 170, 170, 255}, bar{90, 110, 150, 255};
     render::DrawList list;
     list.text(20, 16, "Measured difficulty: solve fraction of each level (rube solve), in the order played", ink, 2);
@@ -50,13 +54,12 @@ int main(int argc, char** argv) {
               1);
     for (int d = 0; d <= static_cast<int>(kDecades); ++d) {
         const float x = kLeft + static_cast<float>(d) / static_cast<float>(kDecades) * (kRight - kLeft);
-        list.line(at(x, kTop - 6), at(x, kBottom), 1.0f, grid);
+        list.line(at(x, kTop - 6), at(x, bottom), 1.0f, grid);
         char label[16];
         std::snprintf(label, sizeof label, "1e-%d", static_cast<int>(kDecades) - d);
-        list.text(static_cast<int>(x) - 16, static_cast<int>(kBottom) + 10, d == kDecades ? "1" : label, ink, 2);
+        list.text(static_cast<int>(x) - 16, static_cast<int>(bottom) + 10, d == kDecades ? "1" : label, ink, 2);
     }
-    const auto& levels = *index.levels;
-    const float row = (kBottom - kTop) / static_cast<float>(levels.size());
+    const float row = kRow;
     for (std::size_t i = 0; i < levels.size(); ++i) {
         const float y = kTop + row * static_cast<float>(i);
         char label[64];
@@ -72,12 +75,12 @@ int main(int argc, char** argv) {
         list.text(static_cast<int>(end) + 6, static_cast<int>(y + 0.5f * row) - 4, label, ink, 1);
     }
     try {
-        const render::FrameSize size{kWidth, kHeight};
+        const render::FrameSize size{kWidth, height};
         const auto context = render::createOffscreenContext(size);
         render::Renderer renderer(*context);
         render::Camera camera;
-        camera.centre = {0.5f * kWidth, 0.5f * kHeight};
-        camera.viewHeight = static_cast<float>(kHeight);
+        camera.centre = {0.5f * kWidth, 0.5f * static_cast<float>(height)};
+        camera.viewHeight = static_cast<float>(height);
         renderer.draw(list, camera);
         render::Image image;
         renderer.readPixels(image);

@@ -27,6 +27,21 @@ bool anyError(const LevelIndexLoad& load, const std::string& text) {
     return false;
 }
 
+// The part kinds a level shows or gives: its items', its inventory's and what its solution places.
+std::set<std::string_view> kindsOf(const IndexedLevel& level) {
+    const SceneLoad scene = loadSceneFile(level.file);
+    REQUIRE(scene.ok());
+    std::set<std::string_view> kinds;
+    for (const ItemDesc& item : scene.scene->level.items) kinds.insert(item.kind->name());
+    for (const auto& entry : scene.scene->level.inventory) kinds.insert(partKind(entry.first)->name());
+    fs::path solution = level.file;
+    solution.replace_extension(".solution.toml");
+    const ScriptLoad script = loadScriptFile(solution, *scene.scene);
+    REQUIRE(script.script);
+    for (const Placement& placed : script.script->placements) kinds.insert(placed.kind->name());
+    return kinds;
+}
+
 } // namespace
 
 TEST_CASE("the level index lists every shipped level exactly once", "[index]") {
@@ -90,16 +105,32 @@ TEST_CASE("at least eight chain levels, each of five or more distinct part kinds
     for (const IndexedLevel& level : *load.levels) {
         if (level.difficulty < 4) continue;
         INFO(level.file.filename().string());
-        const SceneLoad scene = loadSceneFile(level.file);
-        REQUIRE(scene.ok());
-        std::set<std::string_view> kinds;
-        for (const ItemDesc& item : scene.scene->level.items) kinds.insert(item.kind->name());
-        fs::path solution = level.file;
-        solution.replace_extension(".solution.toml");
-        const ScriptLoad script = loadScriptFile(solution, *scene.scene);
-        REQUIRE(script.script);
-        for (const Placement& placed : script.script->placements) kinds.insert(placed.kind->name());
+        const std::set<std::string_view> kinds = kindsOf(level);
         if (kinds.size() >= 5) ++chains;
     }
     CHECK(chains >= 8);
+}
+
+// Issue 22: every part is introduced by a level before a harder one uses it in combination. The
+// index's `introduces` names, for each kind, the first level that shows or gives it: once, and no
+// level uses a kind that it or an earlier level has not introduced.
+TEST_CASE("every part kind is introduced once, by the first level that uses it", "[index]") {
+    const LevelIndexLoad load = loadLevelIndex(kLevels / "index.toml");
+    REQUIRE(load.levels);
+    std::set<std::string> introduced;
+    for (const IndexedLevel& level : *load.levels) {
+        INFO(level.file.filename().string());
+        for (const std::string& kind : level.introduces) {
+            INFO(kind);
+            CHECK(introduced.insert(kind).second);
+        }
+        for (const std::string_view kind : kindsOf(level)) {
+            INFO(kind);
+            CHECK(introduced.count(std::string(kind)) == 1);
+        }
+    }
+    for (ItemKind kind : allPartKinds()) {
+        INFO(kind->name());
+        CHECK(introduced.count(std::string(kind->name())) == 1);
+    }
 }

@@ -21,19 +21,24 @@ SolveReport solve(const SceneDesc& level, const std::string& scriptFile, std::ui
     return makeReport(searchLevel(level, space, options), space, partsUsed(*intended.script));
 }
 
+// The level as it was before a fix: its file with the text `now` (which must be in it) written back as `was`.
+SceneLoad levelAsItWas(const std::string& file, const std::string& now, const std::string& was) {
+    SceneError error;
+    std::string text = readTextFile(file, error).value();
+    const std::size_t at = text.find(now);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, now.size(), was);
+    return parseScene(text, file);
+}
+
 } // namespace
 
 TEST_CASE("pegs gave a heavy ball that was a shortcut dropped beside the top pin, and now gives none") {
     const std::string file = RUBE_GAME_LEVELS_DIR "/pegs.toml";
     const std::string script = RUBE_GAME_LEVELS_DIR "/pegs.solution.toml";
-    SceneError error;
-    const std::string text = readTextFile(file, error).value();
     // The level as it was: a heavy ball in the inventory beside the bouncy one.
     const std::string inventory = "[inventory]\nbouncy = 1\n";
-    REQUIRE(text.find(inventory) != std::string::npos);
-    std::string before = text;
-    before.replace(before.find(inventory), inventory.size(), inventory + "heavy = 1\n");
-    const SceneLoad old = parseScene(before, "pegs.toml");
+    const SceneLoad old = levelAsItWas(file, inventory, inventory + "heavy = 1\n");
     REQUIRE(old.ok());
     // 1200 runs search the heavy ball's 300 placements whole (an equal share of the budget each).
     const SolveReport was = solve(*old.scene, script, 1200);
@@ -57,14 +62,8 @@ TEST_CASE("rope, chain-reaction and balloon were solved by clicks alone, and now
         CAPTURE(name);
         const std::string file = std::string(RUBE_GAME_LEVELS_DIR "/") + name + ".toml";
         const std::string script = std::string(RUBE_GAME_LEVELS_DIR "/") + name + ".solution.toml";
-        SceneError error;
-        const std::string text = readTextFile(file, error).value();
-        const std::string clicks = "clicks = []\n";
-        REQUIRE(text.find(clicks) != std::string::npos);
         // The level as it was: every part a click acts on could be clicked.
-        std::string before = text;
-        before.erase(before.find(clicks), clicks.size());
-        const SceneLoad old = parseScene(before, file);
+        const SceneLoad old = levelAsItWas(file, "clicks = []\n", "");
         REQUIRE(old.ok());
         // Placing nothing is its own subset, searched whole within this budget: clicks alone solved it.
         const SolveReport was = solve(*old.scene, script, 400);
@@ -96,4 +95,30 @@ TEST_CASE("rope, chain-reaction and balloon were solved by clicks alone, and now
                                     SearchSpace(*rope.scene, {}).size());
     CHECK(whole.exhaustive);
     CHECK(whole.shortcuts() == 0);
+}
+
+TEST_CASE("gears had a catapult paddle under the zone that a heavy ball alone glanced off onto the switch, and "
+          "shorter paddles leave no shortcut") {
+    const std::string file = RUBE_GAME_LEVELS_DIR "/gears.toml";
+    const std::string script = RUBE_GAME_LEVELS_DIR "/gears.solution.toml";
+    // The level as it was: paddles of 0.9 m, the left tip at x = -2.33 m, under the zone (to -2.15 m).
+    const SceneLoad old = levelAsItWas(file, "paddle = 0.6\n", "paddle = 0.9\n");
+    REQUIRE(old.ok());
+    const auto heavyAlone = [](const SolveReport& report) {
+        return std::find_if(report.groups.begin(), report.groups.end(),
+                            [](const SolutionGroup& g) { return g.uses == "heavy"; });
+    };
+    // 2000 runs search the heavy ball's 416 placements whole (subsets: nothing, ramp, heavy, both).
+    const SolveReport was = solve(*old.scene, script, 2000);
+    REQUIRE(planSearch(SearchSpace(*old.scene, {}), 2000).whole[2]);
+    REQUIRE(heavyAlone(was) != was.groups.end());
+    CHECK_FALSE(heavyAlone(was)->shortcut.empty());
+
+    const SceneLoad now = loadSceneFile(file);
+    REQUIRE(now.ok());
+    REQUIRE(planSearch(SearchSpace(*now.scene, {}), 2000).whole[2]);
+    const SolveReport is = solve(*now.scene, script, 2000);
+    CHECK_FALSE(is.result.solutions.empty());
+    CHECK(heavyAlone(is) == is.groups.end());
+    CHECK(is.shortcuts() == 0);
 }

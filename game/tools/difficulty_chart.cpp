@@ -59,20 +59,19 @@ int main(int argc, char** argv) {
         std::snprintf(label, sizeof label, "1e-%d", static_cast<int>(kDecades) - d);
         list.text(static_cast<int>(x) - 16, static_cast<int>(bottom) + 10, d == kDecades ? "1" : label, ink, 2);
     }
-    const float row = kRow;
     for (std::size_t i = 0; i < levels.size(); ++i) {
-        const float y = kTop + row * static_cast<float>(i);
+        const float y = kTop + kRow * static_cast<float>(i);
         char label[64];
         std::snprintf(label, sizeof label, "%2zu %-15s d%d", i + 1, levels[i].file.stem().string().c_str(),
                       levels[i].difficulty);
-        list.text(10, static_cast<int>(y + 0.5f * row) - 7, label, ink, 2);
+        list.text(10, static_cast<int>(y + 0.5f * kRow) - 7, label, ink, 2);
         const double fraction = levels[i].solveFraction.value_or(0.0);
         const float end = barEnd(fraction);
         if (end > kLeft)
-            list.box(at(0.5f * (kLeft + end), y + 0.5f * row), {0.5f * (end - kLeft), 0.35f * row}, 0.0f,
+            list.box(at(0.5f * (kLeft + end), y + 0.5f * kRow), {0.5f * (end - kLeft), 0.35f * kRow}, 0.0f,
                      {bar, bar, 0.0f});
         std::snprintf(label, sizeof label, "%.4g", fraction);
-        list.text(static_cast<int>(end) + 6, static_cast<int>(y + 0.5f * row) - 4, label, ink, 1);
+        list.text(static_cast<int>(end) + 6, static_cast<int>(y + 0.5f * kRow) - 4, label, ink, 1);
     }
     try {
         const render::FrameSize size{kWidth, height};

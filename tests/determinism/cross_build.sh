@@ -1,11 +1,20 @@
 #!/usr/bin/env bash
-# Determinism across compilers and optimisation levels: builds `rube` with clang++ -O2 and
-# g++ -O0 beside the main build (g++ -O3, CMake's Release), runs every physics scene under each,
-# and requires the traces to be byte-identical to the main build's. -ffp-contract=off is what makes this hold.
+# Determinism across compilers and optimisation levels: runs every physics scene under `rube` as
+# the main build made it (g++ -O3, CMake's Release), as the sanitizer tree made it (clang++ -O2
+# with ASan and UBSan, which add checks and change no arithmetic: tests/sanitizers/configure.sh;
+# built by tests/sanitizers/build.sh if CTest has not built it yet), and as g++ -O0 makes it (a
+# tree of its own beside the main build, `rube` alone, without debug information), and requires the
+# traces to be byte-identical. -ffp-contract=off is what makes this hold. The clang++ witness was a
+# third tree of its own until the sanitizer tree could serve: CI compiled the game once less.
 #
-# usage: cross_build.sh SOURCE_DIR MAIN_BUILD_DIR WORK_DIR
+# CTest builds the g++ -O0 tree first, as a test of its own (`--build-only`), so it compiles while
+# the sanitizer tree does rather than after it.
+#
+# usage: cross_build.sh [--build-only] SOURCE_DIR MAIN_BUILD_DIR SANITIZER_TREE WORK_DIR
 set -euo pipefail
-src=$1 main_build=$2 work=$3
+build_only=0
+[ "${1:-}" = "--build-only" ] && { build_only=1; shift; }
+src=$1 main_build=$2 clang_tree=$3 work=$4
 mkdir -p "$work"
 
 build() { # name, compiler, build type, more cmake arguments...
@@ -17,10 +26,16 @@ build() { # name, compiler, build type, more cmake arguments...
   echo "$dir/rube"
 }
 
+# CMake's Release is -O3 (the main build's); Debug's -g is dropped: only the code matters here.
+start=$(date +%s)
+gcc_O0=$(build gcc-O0 g++ Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0 -DCMAKE_C_FLAGS_DEBUG=-O0)
+if [ $build_only = 1 ]; then echo "cross_build: g++ -O0 rube built in $(($(date +%s) - start)) s"; exit 0; fi
 command -v clang++ >/dev/null || { echo "cross_build: clang++ is not installed (run .ci/install-deps)" >&2; exit 1; }
-# CMake's Release is -O3 (the main build's); the clang tree is given -O2 itself.
-binaries=("$main_build/rube" "$(build clang-O2 clang++ Release -DCMAKE_CXX_FLAGS_RELEASE='-O2 -DNDEBUG')" "$(build gcc-O0 g++ Debug)")
-names=("main (g++ -O3)" "clang++ -O2" "g++ -O0")
+bash "$src/tests/sanitizers/build.sh" "$src" "$clang_tree" >/dev/null
+# Nothing of Mesa is loaded without rendering, so the leak check stays on with no suppression.
+export ASAN_OPTIONS="detect_leaks=1" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+binaries=("$main_build/rube" "$clang_tree/rube" "$gcc_O0")
+names=("main (g++ -O3)" "clang++ -O2 (sanitizer tree)" "g++ -O0")
 
 # Each scene under its own method, for a few simulated seconds; the small scenes under every method.
 runs=()

@@ -1,6 +1,8 @@
 // Rigid contact constraints: build, warm start, soft solve with friction, restitution.
 #include "rigid_contacts.hpp"
 
+#include "rigid_contact_lanes.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -158,7 +160,8 @@ void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> 
                 const Vec2 rA = p.armA, rB = p.armB;
                 const double vt = t.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
                 const double limit = c.friction * p.normalImpulse;
-                const double total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+                // Spelled out as libstdc++'s std::clamp, so the lanes (rigid_contact_lanes.hpp) can match it.
+                const double total = std::min(std::max(p.tangentImpulse - p.tangentMass * vt, -limit), limit);
                 const double delta = total - p.tangentImpulse;
                 p.tangentImpulse = total;
                 p.deliveredTangent += delta;
@@ -166,8 +169,10 @@ void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> 
                 applyImpulse(b, rB, t * delta);
             }
         }
-        storeBody(sa, a);
-        storeBody(sb, b);
+        // A body that cannot move is never written (its velocity plus 0 p could turn -0 into +0), so two
+        // contacts of a colour that share only such a body may be solved at once (rigid_contact_lanes.hpp).
+        if (movableBody(sa)) storeBody(sa, a);
+        if (movableBody(sb)) storeBody(sb, b);
     }
 }
 

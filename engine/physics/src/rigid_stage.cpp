@@ -270,6 +270,7 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
         if (movable && !omega.empty()) s.inverseInertia = c.inverseInertia;
     }
     chooseSoftness(contacts_, states_);
+    colours_.build(contacts_, states_);
     refreshArms(contacts_, states_);
 }
 
@@ -318,7 +319,7 @@ void RigidStage::solve(double h, bool useBias) {
     solvePivots(pivots_, view_, pivotSoftness_, useBias);
     if (!joints_.empty()) joints_.solve(useBias);
     loadOthers();
-    solveRigidContacts(contacts_, states_, contactSoftness_, h, useBias);
+    solveColouredContacts(contacts_, colours_, states_, contactSoftness_, h, useBias);
     storeOthers();
 }
 

@@ -7,6 +7,7 @@
 
 #include "joint_stage.hpp"
 #include "pivot_joint.hpp"
+#include "rigid_colours.hpp"
 #include "rigid_pairs.hpp"
 #include "rigid_contacts.hpp"
 #include "rigid_warm_start.hpp"
@@ -117,7 +118,8 @@ private:
     std::vector<RigidPair> pairs_;
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
-    std::vector<RigidContact> contacts_;
+    std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)
+    RigidColours colours_;
     std::vector<int> reached_;
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;

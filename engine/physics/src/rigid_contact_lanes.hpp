@@ -86,11 +86,14 @@ struct LaneBody {
         : vx(W::set(s0.velocity.x, s1.velocity.x)), vy(W::set(s0.velocity.y, s1.velocity.y)),
           omega(W::set(s0.omega, s1.omega)), inverseMass(W::set(s0.inverseMass, s1.inverseMass)),
           inverseInertia(W::set(s0.inverseInertia, s1.inverseInertia)) {}
-    /// v += p / m, omega += (r x p) / I, in the lanes of `apply` only (applyImpulse, lane-wise).
-    void apply(typename W::Mask apply, W rx, W ry, W px, W py) {
-        vx = select(apply, vx + px * inverseMass, vx);
-        vy = select(apply, vy + py * inverseMass, vy);
-        omega = select(apply, omega + inverseInertia * (rx * py - ry * px), omega);
+    /// v += p / m, omega += (r x p) / I, in the lanes of `apply` only (applyImpulse, lane-wise);
+    /// `both` says both lanes apply, and the selects are skipped (the same bits).
+    void apply(bool both, typename W::Mask apply, W rx, W ry, W px, W py) {
+        const W x = vx + px * inverseMass, y = vy + py * inverseMass;
+        const W w = omega + inverseInertia * (rx * py - ry * px);
+        vx = both ? x : select(apply, x, vx);
+        vy = both ? y : select(apply, y, vy);
+        omega = both ? w : select(apply, w, omega);
     }
     void store(RigidState& s, int lane) const {
         if (!movableBody(s)) return;
@@ -145,8 +148,9 @@ void solveContactPair(RigidContact& c0, RigidContact& c1, std::span<RigidState> 
         const W delivered = W::set(p0.deliveredNormal, p1.deliveredNormal) + delta;
         const W most = maxOf(W::set(p0.maxNormalImpulse, p1.maxNormalImpulse), total);
         const W minus = -delta;
-        a.apply(has, rAx, rAy, nx * minus, ny * minus);
-        b.apply(has, rBx, rBy, nx * delta, ny * delta);
+        const bool both = k < c0.count && k < c1.count;
+        a.apply(both, has, rAx, rAy, nx * minus, ny * minus);
+        b.apply(both, has, rBx, rBy, nx * delta, ny * delta);
         if (k < c0.count) {
             p0.normalImpulse = total.lane(0);
             p0.deliveredNormal = delivered.lane(0);
@@ -178,8 +182,8 @@ void solveContactPair(RigidContact& c0, RigidContact& c1, std::span<RigidState> 
             const W delta = total - old;
             const W delivered = W::set(p0.deliveredTangent, p1.deliveredTangent) + delta;
             const W minus = -delta;
-            a.apply(has, rAx, rAy, tx * minus, ty * minus);
-            b.apply(has, rBx, rBy, tx * delta, ty * delta);
+            a.apply(on0 && on1, has, rAx, rAy, tx * minus, ty * minus);
+            b.apply(on0 && on1, has, rBx, rBy, tx * delta, ty * delta);
             if (on0) {
                 p0.tangentImpulse = total.lane(0);
                 p0.deliveredTangent = delivered.lane(0);

@@ -1,6 +1,8 @@
 // Rigid contact constraints: build, warm start, soft solve with friction, restitution.
 #include "rigid_contacts.hpp"
 
+#include "rigid_contact_lanes.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,8 +17,16 @@ double effectiveMass(const LoadedBody& a, const LoadedBody& b, Vec2 rA, Vec2 rB,
     return k > 0.0 ? 1.0 / k : 0.0;
 }
 
-/// The arm of a point as it stands in this substep: a rigid body's arm turns with it.
-Vec2 currentArm(const LoadedBody& body, Vec2 anchor) { return rotate(body.turnRotation, anchor); }
+/// A solver body's velocities and what the constraints read of it, as the sweeps load it.
+LoadedBody loadBody(const RigidState& s) {
+    return {s.velocity, s.omega, s.displacement, s.turnRotation, s.inverseMass, s.inverseInertia};
+}
+
+/// Writes back what a constraint changes: the velocities.
+void storeBody(RigidState& s, const LoadedBody& l) {
+    s.velocity = l.velocity;
+    s.omega = l.omega;
+}
 
 } // namespace
 
@@ -26,6 +36,7 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
     c.a = a;
     c.b = b;
     c.normal = manifold.normal;
+    c.tangent = c.normal.perpendicular();
     c.friction = friction;
     c.bounciness = bounciness;
     c.count = manifold.count;
@@ -43,43 +54,63 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
     return c;
 }
 
-void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, double h, double maxTurn) {
+void refreshArms(std::span<RigidContact> contacts, std::span<const RigidState> bodies) {
     for (RigidContact& c : contacts) {
-        LoadedBody a = load(view, c.a), b = load(view, c.b);
+        const Vec2 qA = bodies[static_cast<std::size_t>(c.bodyA)].turnRotation;
+        const Vec2 qB = bodies[static_cast<std::size_t>(c.bodyB)].turnRotation;
+        for (int k = 0; k < c.count; ++k) {
+            RigidContactPoint& p = c.points[k];
+            p.armA = rotate(qA, p.anchorA);
+            p.armB = rotate(qB, p.anchorB);
+        }
+    }
+}
+
+void chooseSoftness(std::span<RigidContact> contacts, std::span<const RigidState> bodies) {
+    for (RigidContact& c : contacts)
+        c.againstFixed = bodies[static_cast<std::size_t>(c.bodyA)].inverseMass == 0.0 ||
+                         bodies[static_cast<std::size_t>(c.bodyB)].inverseMass == 0.0;
+}
+
+void warmStartRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> bodies, double h, double maxTurn) {
+    for (RigidContact& c : contacts) {
+        RigidState& sa = bodies[static_cast<std::size_t>(c.bodyA)];
+        RigidState& sb = bodies[static_cast<std::size_t>(c.bodyB)];
+        LoadedBody a = loadBody(sa), b = loadBody(sb);
         if (std::abs(a.omega) * h > maxTurn || std::abs(b.omega) * h > maxTurn) {
             for (int k = 0; k < c.count; ++k) c.points[k].normalImpulse = c.points[k].tangentImpulse = 0.0;
             continue;
         }
-        const Vec2 t = c.normal.perpendicular();
+        const Vec2 t = c.tangent;
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
-            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
             const Vec2 impulse = c.normal * p.normalImpulse + t * p.tangentImpulse;
             p.deliveredNormal += p.normalImpulse;
             p.deliveredTangent += p.tangentImpulse;
-            applyImpulse(a, rA, -impulse);
-            applyImpulse(b, rB, impulse);
+            applyImpulse(a, p.armA, -impulse);
+            applyImpulse(b, p.armB, impulse);
         }
-        store(view, c.a, a);
-        store(view, c.b, b);
+        storeBody(sa, a);
+        storeBody(sb, b);
     }
 }
 
-void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view, int substep) {
+void measureApproach(std::span<RigidContact> contacts, std::span<const RigidState> bodies, int substep) {
     for (RigidContact& c : contacts) {
-        const LoadedBody a = load(view, c.a), b = load(view, c.b);
-        const Vec2 n = c.normal, t = n.perpendicular();
+        const LoadedBody a = loadBody(bodies[static_cast<std::size_t>(c.bodyA)]);
+        const LoadedBody b = loadBody(bodies[static_cast<std::size_t>(c.bodyB)]);
+        const Vec2 n = c.normal, t = c.tangent;
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
             if (p.maxNormalImpulse > 0.0) continue;
-            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            const Vec2 rA = p.armA, rB = p.armB;
             double vn = n.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
             // Take back what this contact's own impulses did to vn: impulse P along d at point j changes
             // point k's vn by P [(n . d)(1/mA + 1/mB) + (rAk x n)(rAj x d) / IA + (rBk x n)(rBj x d) / IB].
             for (int j = 0; j < c.count; ++j) {
                 const RigidContactPoint& q = c.points[j];
                 if (q.deliveredNormal == 0.0 && q.deliveredTangent == 0.0) continue;
-                const Vec2 qA = currentArm(a, q.anchorA), qB = currentArm(b, q.anchorB);
+                const Vec2 qA = q.armA, qB = q.armB;
                 const double ka = a.inverseInertia * rA.cross(n), kb = b.inverseInertia * rB.cross(n);
                 vn -= q.deliveredNormal * (a.inverseMass + b.inverseMass + ka * qA.cross(n) + kb * qB.cross(n));
                 vn -= q.deliveredTangent * (ka * qA.cross(t) + kb * qB.cross(t));
@@ -90,16 +121,18 @@ void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& vi
     }
 }
 
-void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view,
+void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> bodies,
                         const RigidContactSoftness& softness, double h, bool useBias) {
     const double invH = 1.0 / h;
     for (RigidContact& c : contacts) {
-        LoadedBody a = load(view, c.a), b = load(view, c.b);
-        const Softness& soft = a.inverseMass == 0.0 || b.inverseMass == 0.0 ? softness.fixed : softness.movable;
+        RigidState& sa = bodies[static_cast<std::size_t>(c.bodyA)];
+        RigidState& sb = bodies[static_cast<std::size_t>(c.bodyB)];
+        LoadedBody a = loadBody(sa), b = loadBody(sb);
+        const Softness& soft = c.againstFixed ? softness.fixed : softness.movable;
         const Vec2 dp = b.displacement - a.displacement;
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
-            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            const Vec2 rA = p.armA, rB = p.armB;
             // The current gap from the fixed anchors and how far each body moved and turned.
             const double s = c.normal.dot(dp + rB - rA) + p.baseSeparation;
             double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
@@ -121,13 +154,14 @@ void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView&
             applyImpulse(b, rB, c.normal * delta);
         }
         if (c.friction > 0.0) {
-            const Vec2 t = c.normal.perpendicular();
+            const Vec2 t = c.tangent;
             for (int k = 0; k < c.count; ++k) {
                 RigidContactPoint& p = c.points[k];
-                const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+                const Vec2 rA = p.armA, rB = p.armB;
                 const double vt = t.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
                 const double limit = c.friction * p.normalImpulse;
-                const double total = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+                // Spelled out as libstdc++'s std::clamp, so the lanes (rigid_contact_lanes.hpp) can match it.
+                const double total = std::min(std::max(p.tangentImpulse - p.tangentMass * vt, -limit), limit);
                 const double delta = total - p.tangentImpulse;
                 p.tangentImpulse = total;
                 p.deliveredTangent += delta;
@@ -135,8 +169,10 @@ void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView&
                 applyImpulse(b, rB, t * delta);
             }
         }
-        store(view, c.a, a);
-        store(view, c.b, b);
+        // A body that cannot move is never written (its velocity plus 0 p could turn -0 into +0), so two
+        // contacts of a colour that share only such a body may be solved at once (rigid_contact_lanes.hpp).
+        if (movableBody(sa)) storeBody(sa, a);
+        if (movableBody(sb)) storeBody(sb, b);
     }
 }
 
@@ -153,8 +189,8 @@ bool bounces(const RigidContactPoint& p, double threshold) {
 bool blockRestitution(RigidContact& c, LoadedBody& a, LoadedBody& b) {
     RigidContactPoint& p1 = c.points[0];
     RigidContactPoint& p2 = c.points[1];
-    const Vec2 rA1 = currentArm(a, p1.anchorA), rB1 = currentArm(b, p1.anchorB);
-    const Vec2 rA2 = currentArm(a, p2.anchorA), rB2 = currentArm(b, p2.anchorB);
+    const Vec2 rA1 = p1.armA, rB1 = p1.armB;
+    const Vec2 rA2 = p2.armA, rB2 = p2.armB;
     const double rn1A = rA1.cross(c.normal), rn1B = rB1.cross(c.normal);
     const double rn2A = rA2.cross(c.normal), rn2B = rB2.cross(c.normal);
     const double m = a.inverseMass + b.inverseMass;
@@ -194,20 +230,22 @@ bool blockRestitution(RigidContact& c, LoadedBody& a, LoadedBody& b) {
 
 } // namespace
 
-void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverView& view, double threshold) {
+void applyRigidRestitution(std::span<RigidContact> contacts, std::span<RigidState> bodies, double threshold) {
     for (RigidContact& c : contacts) {
         if (c.bounciness == 0.0) continue;
-        LoadedBody a = load(view, c.a), b = load(view, c.b);
+        RigidState& sa = bodies[static_cast<std::size_t>(c.bodyA)];
+        RigidState& sb = bodies[static_cast<std::size_t>(c.bodyB)];
+        LoadedBody a = loadBody(sa), b = loadBody(sb);
         if (c.count == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold) &&
             blockRestitution(c, a, b)) {
-            store(view, c.a, a);
-            store(view, c.b, b);
+            storeBody(sa, a);
+            storeBody(sb, b);
             continue;
         }
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
             if (!bounces(p, threshold)) continue;
-            const Vec2 rA = currentArm(a, p.anchorA), rB = currentArm(b, p.anchorB);
+            const Vec2 rA = p.armA, rB = p.armB;
             const double vn = c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
             // Drive vn to C times the approach speed, pushing only (lecture 3: v' = -C vn).
             const double lambda = -p.normalMass * (vn - c.bounciness * p.approachSpeed);
@@ -217,8 +255,8 @@ void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverVi
             applyImpulse(a, rA, c.normal * -delta);
             applyImpulse(b, rB, c.normal * delta);
         }
-        store(view, c.a, a);
-        store(view, c.b, b);
+        storeBody(sa, a);
+        storeBody(sb, b);
     }
 }
 

@@ -22,6 +22,7 @@ namespace rube {
 /// One point of a rigid contact.
 struct RigidContactPoint {
     Vec2 anchorA, anchorB;       ///< from each body's centre at the step's start, m
+    Vec2 armA, armB;             ///< the anchors turned with their bodies as they stand this substep (refreshArms)
     double baseSeparation = 0.0; ///< s0 - n . (rB - rA): the gap formula's constant term
     double normalMass = 0.0;
     double tangentMass = 0.0;
@@ -40,7 +41,10 @@ struct RigidContactPoint {
 /// A manifold turned into a constraint: one normal, up to two points.
 struct RigidContact {
     BodySide a, b;
-    Vec2 normal;             ///< unit, from A towards B
+    int bodyA = 0, bodyB = 0;  ///< the sides in the rigid stage's solver bodies (RigidStage::states_)
+    Vec2 normal;               ///< unit, from A towards B
+    Vec2 tangent;              ///< the normal turned a quarter anticlockwise: friction's direction
+    bool againstFixed = false; ///< a side cannot be moved: the contact takes the stiffer softness
     double friction = 0.0;   ///< mu of the pair: the product of both materials' (as circle pairs)
     double bounciness = 0.0; ///< C of the pair: the product of both materials'
     int count = 0;
@@ -60,11 +64,13 @@ struct RigidContactSoftness {
     double maxPushSpeed = 3.0; ///< m/s: deep overlaps are pushed out no faster
 };
 
+/// The functions below act on the rigid stage's solver bodies, indexed by bodyA and bodyB.
+
 /// Applies every point's last impulses again as the starting guess (warm starting). A contact whose
 /// body turns more than `maxTurn` radians in the substep of length h starts from zero instead: its
 /// anchors have swung so far that the old impulse, applied at the new arms, pumps energy in (a box
 /// struck on a corner at 500 m/s spins at 10^4 rad/s, and warm starting then diverged within one step).
-void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view, double h, double maxTurn);
+void warmStartRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> bodies, double h, double maxTurn);
 
 /// Before a substep's impulses: each point that has not pushed yet notes its approach speed -vn.
 /// Measured before any impulse, as Box2D measures it before the step: a point measured inside the sweep
@@ -75,15 +81,22 @@ void warmStartRigidContacts(std::span<RigidContact> contacts, const RigidSolverV
 /// then the one it had without the first corner's push (restitution's targets C a with a = -J u_free
 /// leave the energy at most the free motion's: KE' = KE_free - (1 - C^2) / 2 a^T K^-1 a).
 /// `substep` is the substep about to run: a point that has not pushed yet notes it as its touch substep.
-void measureApproach(std::span<RigidContact> contacts, const RigidSolverView& view, int substep);
+void measureApproach(std::span<RigidContact> contacts, std::span<const RigidState> bodies, int substep);
 
 /// One Gauss-Seidel sweep: normal impulses (soft push-out when `useBias`, speculative gaps always
 /// kept), then friction within the Coulomb cone |lambda_t| <= mu lambda_n.
-void solveRigidContacts(std::span<RigidContact> contacts, const RigidSolverView& view,
+void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> bodies,
                         const RigidContactSoftness& softness, double h, bool useBias);
 
 /// Restitution once per step for points that touched faster than `threshold`: the normal velocity
 /// becomes -C times the approach speed (v' = -C vn, lecture 3).
-void applyRigidRestitution(std::span<RigidContact> contacts, const RigidSolverView& view, double threshold);
+void applyRigidRestitution(std::span<RigidContact> contacts, std::span<RigidState> bodies, double threshold);
+
+/// Turns every point's anchors with their bodies as they stand now (armA, armB): the sweeps of a
+/// substep all read the same arms, so they are computed once after each change of the bodies' turns.
+void refreshArms(std::span<RigidContact> contacts, std::span<const RigidState> bodies);
+
+/// Which softness the contact takes, from its sides' masses in `bodies` (constant over the step).
+void chooseSoftness(std::span<RigidContact> contacts, std::span<const RigidState> bodies);
 
 } // namespace rube

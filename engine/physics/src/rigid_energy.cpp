@@ -39,7 +39,7 @@ constexpr double kRunawayFraction = 0.05;
 } // namespace
 
 void RigidStage::capBounceEnergy() {
-    const std::size_t n = states_.size();
+    const std::size_t n = rigidCount_;
     onlyFixed_.assign(n, 1);
     frame_.assign(n, Vec2{});
     seenFrame_.assign(n, 0);

@@ -46,6 +46,7 @@ BoundingBox boundsOf(const RoundedPolygon& p, double extra) {
 void RigidStage::prepare(const StepContext& ctx, double dt) {
     circleCount_ = static_cast<int>(ctx.circles.size());
     const std::size_t n = ctx.bodies.size();
+    rigidCount_ = n;
     states_.resize(n);
     startPosition_.resize(n);
     startAngle_.resize(n);
@@ -89,6 +90,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     contactSoftness_.fixed = makeSoftness(kStaticHertzScale * hertz, kContactDampingRatio, h);
     pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
     findContacts(ctx, dt);
+    states_.resize(rigidCount_ + otherBody_.size()); // the listed circles and segments: filled at bind()
     cache_.apply(contacts_);
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
     // Joints are as stiff as pivots (the same softness).
@@ -98,6 +100,9 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
 void RigidStage::findContacts(const StepContext& ctx, double dt) {
     contacts_.clear();
     reached_.clear();
+    states_.resize(rigidCount_);
+    otherBody_.clear();
+    otherSlot_.assign(ctx.circles.size() + ctx.segments.size(), -1);
     const auto& bodies = ctx.bodies;
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     const std::size_t n = bodies.size();
@@ -134,6 +139,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         if (m.count == 0) return;
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                              ma.bounciness * mb.bounciness));
+        contacts_.back().bodyA = solverBodyOf(a);
+        contacts_.back().bodyB = solverBodyOf(b);
     };
     // Sleepers: a contact with an awake body, or a moving kinematic body's box, reaches them.
     const auto asleep = [&](std::size_t i) { return bodies[i].sleep.asleep; };
@@ -237,31 +244,88 @@ void RigidStage::reachBySegments(const StepContext& ctx, double dt) {
     }
 }
 
+int RigidStage::solverBodyOf(BodySide side) {
+    if (side.rigid) return side.index;
+    int& slot = otherSlot_[static_cast<std::size_t>(side.index)];
+    if (slot < 0) {
+        slot = static_cast<int>(rigidCount_ + otherBody_.size());
+        otherBody_.push_back(side.index);
+    }
+    return slot;
+}
+
 void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std::span<const Circle> circles) {
-    view_ = RigidSolverView{states_, others, omega, circles};
+    view_ = RigidSolverView{std::span<RigidState>(states_).first(rigidCount_), others, omega, circles};
     joints_.bind(view_);
+    // A listed circle's masses as load() reads them, once for the step: an asleep circle is fixed,
+    // and its inertia counts only when the step models rotation. A segment has infinite mass.
+    for (std::size_t k = 0; k < otherBody_.size(); ++k) {
+        RigidState& s = states_[rigidCount_ + k];
+        s = RigidState{};
+        const auto i = static_cast<std::size_t>(otherBody_[k]);
+        if (i >= circles.size()) continue;
+        const Circle& c = circles[i];
+        const bool movable = c.motion == Motion::dynamic && !c.sleep.asleep;
+        if (movable) s.inverseMass = c.inverseMass;
+        if (movable && !omega.empty()) s.inverseInertia = c.inverseInertia;
+    }
+    chooseSoftness(contacts_, states_);
+    colours_.build(contacts_, states_);
+    refreshArms(contacts_, states_);
+}
+
+void RigidStage::loadOthers() {
+    const bool spins = !view_.omega.empty();
+    for (std::size_t k = 0; k < otherBody_.size(); ++k) {
+        RigidState& s = states_[rigidCount_ + k];
+        const auto i = static_cast<std::size_t>(otherBody_[k]);
+        const SolverBody& b = view_.others[i];
+        s.velocity = b.velocity;
+        s.displacement = b.displacement;
+        // A circle's contact point stays where the normal meets its surface however it turns, so its
+        // turn never moves an anchor (turnRotation stays 1, 0); only its spin enters the point's velocity.
+        s.omega = spins && i < view_.circles.size() ? view_.omega[i] : 0.0;
+    }
+}
+
+void RigidStage::storeOthers() {
+    const bool spins = !view_.omega.empty();
+    for (std::size_t k = 0; k < otherBody_.size(); ++k) {
+        const RigidState& s = states_[rigidCount_ + k];
+        const auto i = static_cast<std::size_t>(otherBody_[k]);
+        view_.others[i].velocity = s.velocity;
+        if (spins && i < view_.circles.size()) view_.omega[i] = s.omega;
+    }
 }
 
 void RigidStage::integrateVelocities(Vec2 gravityStep) {
-    for (RigidState& s : states_)
-        if (s.inverseMass > 0.0) s.velocity += gravityStep;
+    for (std::size_t i = 0; i < rigidCount_; ++i)
+        if (states_[i].inverseMass > 0.0) states_[i].velocity += gravityStep;
 }
 
 void RigidStage::warmStart() {
-    measureApproach(contacts_, view_, substep_++);
+    loadOthers();
+    measureApproach(contacts_, states_, substep_++);
     warmStartPivots(pivots_, view_);
-    if (!joints_.empty()) joints_.warmStart();
-    warmStartRigidContacts(contacts_, view_, substepTime_, kMaxWarmStartTurn);
+    if (!joints_.empty()) {
+        joints_.warmStart();
+        loadOthers(); // the joints may have pushed a listed circle
+    }
+    warmStartRigidContacts(contacts_, states_, substepTime_, kMaxWarmStartTurn);
+    storeOthers();
 }
 
 void RigidStage::solve(double h, bool useBias) {
     solvePivots(pivots_, view_, pivotSoftness_, useBias);
     if (!joints_.empty()) joints_.solve(useBias);
-    solveRigidContacts(contacts_, view_, contactSoftness_, h, useBias);
+    loadOthers();
+    solveColouredContacts(contacts_, colours_, states_, contactSoftness_, h, useBias);
+    storeOthers();
 }
 
 void RigidStage::integratePositions(double h) {
-    for (RigidState& s : states_) {
+    for (std::size_t i = 0; i < rigidCount_; ++i) {
+        RigidState& s = states_[i];
         // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
         // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
         if (s.inverseMass > 0.0 || s.inverseInertia > 0.0)
@@ -271,13 +335,16 @@ void RigidStage::integratePositions(double h) {
         s.turn += s.omega * h;
         s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
     }
+    refreshArms(contacts_, states_);
     if (!joints_.empty()) joints_.integrateCircleTurns(h);
 }
 
 void RigidStage::applyRestitution(double threshold) {
     cache_.store(contacts_); // the last substep's impulses, not restitution's one-off bounce
     beforeBounce_ = states_;
-    applyRigidRestitution(contacts_, view_, threshold);
+    loadOthers();
+    applyRigidRestitution(contacts_, states_, threshold);
+    storeOthers();
     capBounceEnergy();
 }
 

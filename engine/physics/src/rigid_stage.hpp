@@ -7,6 +7,7 @@
 
 #include "joint_stage.hpp"
 #include "pivot_joint.hpp"
+#include "rigid_colours.hpp"
 #include "rigid_pairs.hpp"
 #include "rigid_contacts.hpp"
 #include "rigid_warm_start.hpp"
@@ -66,6 +67,14 @@ public:
 
 private:
     void findContacts(const StepContext& ctx, double dt);
+    /// The solver body of a contact's side: a rigid body's own slot, or the circle solver's body's
+    /// place in the compact list after the rigid ones (added on first use).
+    int solverBodyOf(BodySide side);
+    /// Copies the listed circle-solver bodies' velocities, displacements and spins into their solver
+    /// bodies (before a sweep over the contacts), and their velocities and spins back (after it), so
+    /// rigid and circle contacts act on the same velocities in the same Gauss-Seidel order.
+    void loadOthers();
+    void storeOthers();
     void reachBySegments(const StepContext& ctx, double dt);
     /// After restitution: a body whose every contact is with something fixed keeps at most the energy
     /// it began the step with; restitution's extra velocity is scaled back to that (rigid_energy.cpp).
@@ -79,7 +88,13 @@ private:
     std::int64_t clamps_ = 0;                   // substep clamps this step, added to the stats in finish()
     int substep_ = 0;                           // the substep the next warm start begins
     double substepTime_ = 0.0;                  // h, s
+    // The step's solver bodies, one contiguous array the contacts index: the rigid bodies first
+    // (slot i is rigid body i: pivots, joints, the sweep and the energy cap read them there), then
+    // only those circles and segments that some rigid contact touches (otherBody_ says which).
     std::vector<RigidState> states_;
+    std::size_t rigidCount_ = 0;
+    std::vector<int> otherBody_; // per solver body past the rigid ones: its index in the circle solver's bodies
+    std::vector<int> otherSlot_; // per circle-solver body: its solver body, or -1
     std::vector<Vec2> startPosition_;
     std::vector<double> startAngle_;
     std::vector<Vec2> startVelocity_; // per rigid body, for the energy it began the step with
@@ -103,7 +118,8 @@ private:
     std::vector<RigidPair> pairs_;
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
-    std::vector<RigidContact> contacts_;
+    std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)
+    RigidColours colours_;
     std::vector<int> reached_;
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;

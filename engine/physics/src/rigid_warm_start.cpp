@@ -18,14 +18,28 @@ std::uint64_t pairKey(const RigidContact& c) {
 
 void RigidContactCache::apply(std::span<RigidContact> contacts) const {
     if (entries_.empty()) return;
+    const auto before = [](const Entry& e, const std::tuple<std::uint64_t, std::uint32_t>& key) {
+        return std::make_tuple(e.pair, e.feature) < key;
+    };
+    // Contacts come mostly in key order (body by body), so each search gallops on from where the last
+    // one ended (doubling steps, then a binary search within the last step): the same first entry not
+    // before the key as a search over the whole table, found in a few steps.
+    std::size_t from = 0;
     for (RigidContact& c : contacts) {
         const std::uint64_t pair = pairKey(c);
         for (int k = 0; k < c.count; ++k) {
             RigidContactPoint& p = c.points[k];
-            const auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_tuple(pair, p.feature),
-                                             [](const Entry& e, const std::tuple<std::uint64_t, std::uint32_t>& key) {
-                                                 return std::make_tuple(e.pair, e.feature) < key;
-                                             });
+            const auto key = std::make_tuple(pair, p.feature);
+            if (from > 0 && !before(entries_[from - 1], key)) from = 0; // behind the last one: search all
+            std::size_t step = 1, lo = from;
+            while (lo + step <= entries_.size() && before(entries_[lo + step - 1], key)) {
+                lo += step;
+                step *= 2;
+            }
+            const auto first = entries_.begin() + static_cast<std::ptrdiff_t>(lo);
+            const auto last = entries_.begin() + static_cast<std::ptrdiff_t>(std::min(lo + step, entries_.size()));
+            const auto it = std::lower_bound(first, last, key, before);
+            from = static_cast<std::size_t>(it - entries_.begin());
             if (it == entries_.end() || it->pair != pair || it->feature != p.feature) continue;
             p.normalImpulse = it->normalImpulse;
             p.tangentImpulse = it->tangentImpulse;

@@ -102,7 +102,7 @@ TEST_CASE("a minimal scene takes the physics defaults", "[scene]") {
 TEST_CASE("the [world] table sets every WorldDef field", "[scene]") {
     const SceneDesc scene = sceneOf(
         "name = \"w\"\n[world]\ngravity = [1, -2]\ntime_step = 0.1\nmethod = \"turn-based\"\n"
-        "bounds = { min = [-1, -2], max = [3, 4] }\nsubsteps = 3\nmax_events_per_step = 7\n"
+        "bounds = { min = [-1, -2], max = [3, 4] }\nsubsteps = 3\nworkers = 3\nmax_events_per_step = 7\n"
         "resting_speed = 0.5\nduration = 1.0\n");
     CHECK(scene.world.gravity == Vec2{1, -2});
     CHECK(scene.world.timeStep == 0.1);
@@ -110,6 +110,7 @@ TEST_CASE("the [world] table sets every WorldDef field", "[scene]") {
     CHECK(scene.world.bounds.min == Vec2{-1, -2});
     CHECK(scene.world.bounds.max == Vec2{3, 4});
     CHECK(scene.world.substeps == 3);
+    CHECK(scene.world.workers == 3);
     CHECK(scene.world.maxEventsPerStep == 7);
     CHECK(scene.world.restingSpeed == 0.5);
     // 1.0 / 0.1 is 9.999999999999998 in doubles: the run must still be 10 steps, not 11 or 9.
@@ -193,6 +194,9 @@ TEST_CASE("values out of range say the range and the value", "[errors]") {
     CHECK(errorOf("name = \"x\"\n[world]\ntime_step = 0\n") == "s.toml:3:13: time_step must be greater than 0, got 0");
     CHECK(errorOf("name = \"x\"\n[world]\nsubsteps = 0\n") ==
           "s.toml:3:12: substeps must be between 1 and 1000, got 0");
+    CHECK(errorOf("name = \"x\"\n[world]\nworkers = 0\n") == "s.toml:3:11: workers must be between 1 and 64, got 0");
+    CHECK(errorOf("name = \"x\"\n[world]\nworkers = 65\n") == "s.toml:3:11: workers must be between 1 and 64, got 65");
+    CHECK(errorOf("name = \"x\"\n[world]\nworkers = 1.5\n") == "s.toml:3:11: workers must be an integer, got float");
     CHECK(errorOf("name = \"x\"\n[world]\nmethod = \"exat\"\n") ==
           "s.toml:3:10: method must be one of discrete, turn-based, exact, solver, auto, got 'exat' (did you mean "
           "'exact'?)");

@@ -20,7 +20,7 @@ constexpr std::string_view kTopAndLevelKeys[] = {
     "box",  "capsule",     "pivot", "joint", "item", "inventory", "zone",        "goal",    "hint", "clicks"};
 constexpr std::string_view kWorldKeys[] = {"gravity",  "time_step",           "method",        "bounds",
                                            "substeps", "max_events_per_step", "resting_speed", "duration",
-                                           "air_drag", "sleep_speed",         "time_to_sleep"};
+                                           "air_drag", "sleep_speed",         "time_to_sleep", "workers"};
 constexpr std::string_view kAirDragKeys[] = {"linear", "quadratic"};
 constexpr std::string_view kBoundsKeys[] = {"min", "max"};
 constexpr std::string_view kViewKeys[] = {"min", "max"};
@@ -37,7 +37,8 @@ constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},
                                  {"resting_speed", "[world]"},
                                  {"air_drag", "[world]"},
                                  {"sleep_speed", "[world]"},
-                                 {"time_to_sleep", "[world]"}};
+                                 {"time_to_sleep", "[world]"},
+                                 {"workers", "[world]"}};
 
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
@@ -109,6 +110,7 @@ void readWorld(TableReader& root, SceneDesc& scene) {
     readBounds(world, scene);
     readAirDrag(world, scene);
     if (const auto n = world.integer("substeps", 1, 1000)) def.substeps = static_cast<int>(*n);
+    if (const auto n = world.integer("workers", 1, kMaxWorkers)) def.workers = static_cast<int>(*n);
     if (const auto n = world.integer("max_events_per_step", 1, 10'000'000)) def.maxEventsPerStep = static_cast<int>(*n);
     if (const auto v = world.number("resting_speed", NumberRange::nonNegative())) def.restingSpeed = *v;
     if (const auto v = world.number("sleep_speed", NumberRange::nonNegative())) def.sleepSpeed = *v;

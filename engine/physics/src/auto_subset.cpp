@@ -70,6 +70,7 @@ StepContext StepSubset::context(const StepContext& world, const WorldDef& def) {
     StepContext sub{def,           circles_,    world.segments, bodies_,    world.time, world.restingSpeed,
                     world.impacts, world.stats, pivots_,        world.ropes};
     sub.sleep = world.sleep;
+    sub.workers = world.workers;
     sub.joints = joints_;
     return sub;
 }

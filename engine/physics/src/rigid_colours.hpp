@@ -5,6 +5,7 @@
 // processor overlaps them (and a worker could take a colour's share). Not part of the public API.
 
 #include "rigid_contacts.hpp"
+#include "worker_pool.hpp"
 
 #include <cstdint>
 #include <span>
@@ -37,10 +38,54 @@ private:
     int starts_[kRigidColours + 2] = {};
 };
 
-/// solveRigidContacts over `contacts` in colour order (as `colours` built them), two contacts of a
-/// colour at a time in the lanes of LanePair (rigid_contact_lanes.hpp); the overflow one by one. The
-/// same bits as solveRigidContacts over the same list, with SSE2 or without.
+/// Contacts of a colour each worker needs before a colour is shared (below it one worker sweeps all).
+constexpr std::size_t kLeastContactsEach = 64;
+
+/// Calls sweep(first, last) over the contacts [first, last) colour after colour, the overflow last
+/// and whole. With `pool`, each large colour is split among the workers (in runs of an even length,
+/// so the lanes keep their pairs) and all meet at a barrier before the next colour. A sweep that
+/// writes only its contacts and their movable bodies gives the same bits for any split, since no two
+/// contacts of a colour share a movable body; the serial order is the colours' order.
+template <class Sweep>
+void sweepColours(WorkerPool* pool, const RigidColours& colours, Sweep sweep) {
+    const auto at = [&](int colour) { return static_cast<std::size_t>(colours.start(colour)); };
+    const int workers = pool == nullptr ? 1 : pool->workers();
+    const std::size_t least = kLeastContactsEach * static_cast<std::size_t>(workers);
+    bool shared = false;
+    for (int colour = 0; colour < kRigidColours && workers > 1; ++colour)
+        shared = shared || at(colour + 1) - at(colour) >= least;
+    if (!shared) {
+        for (int colour = 0; colour <= kRigidColours; ++colour)
+            if (at(colour) < at(colour + 1)) sweep(at(colour), at(colour + 1));
+        return;
+    }
+    auto task = [&](int w) {
+        for (int colour = 0; colour < kRigidColours; ++colour) {
+            const std::size_t first = at(colour), n = at(colour + 1) - first;
+            if (n == 0) continue;
+            if (n < least) { // too few to share: one worker, the others go on to the barrier
+                if (w == 0) sweep(first, first + n);
+            } else {
+                const WorkerPool::Range r = pool->share(n, w, 2);
+                if (r.begin < r.end) sweep(first + r.begin, first + r.end);
+            }
+            pool->barrier();
+        }
+        if (w == 0 && at(kRigidColours) < at(kRigidColours + 1)) sweep(at(kRigidColours), at(kRigidColours + 1));
+    };
+    pool->run(task);
+}
+
+/// solveRigidContacts over the contacts of one colour (or of the overflow), two at a time in the
+/// lanes of LanePair (rigid_contact_lanes.hpp). The same bits as solveRigidContacts over the same
+/// contacts, with SSE2 or without.
+void solveContactLanes(std::span<RigidContact> contacts, std::span<RigidState> bodies,
+                       const RigidContactSoftness& softness, double h, bool useBias);
+
+/// solveRigidContacts over `contacts` in colour order (as `colours` built them), sharing each colour
+/// among `pool`'s workers (sweepColours); the overflow one by one. The same bits as
+/// solveRigidContacts over the same list, with SSE2 or without, for any number of workers.
 void solveColouredContacts(std::span<RigidContact> contacts, const RigidColours& colours, std::span<RigidState> bodies,
-                           const RigidContactSoftness& softness, double h, bool useBias);
+                           const RigidContactSoftness& softness, double h, bool useBias, WorkerPool* pool = nullptr);
 
 } // namespace rube

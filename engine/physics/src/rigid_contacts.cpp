@@ -90,8 +90,9 @@ void warmStartRigidContacts(std::span<RigidContact> contacts, std::span<RigidSta
             applyImpulse(a, p.armA, -impulse);
             applyImpulse(b, p.armB, impulse);
         }
-        storeBody(sa, a);
-        storeBody(sb, b);
+        // As in the solve: a body that cannot move is never written, so a colour may be shared among workers.
+        if (movableBody(sa)) storeBody(sa, a);
+        if (movableBody(sb)) storeBody(sb, b);
     }
 }
 
@@ -238,8 +239,8 @@ void applyRigidRestitution(std::span<RigidContact> contacts, std::span<RigidStat
         LoadedBody a = loadBody(sa), b = loadBody(sb);
         if (c.count == 2 && bounces(c.points[0], threshold) && bounces(c.points[1], threshold) &&
             blockRestitution(c, a, b)) {
-            storeBody(sa, a);
-            storeBody(sb, b);
+            if (movableBody(sa)) storeBody(sa, a);
+            if (movableBody(sb)) storeBody(sb, b);
             continue;
         }
         for (int k = 0; k < c.count; ++k) {
@@ -255,8 +256,8 @@ void applyRigidRestitution(std::span<RigidContact> contacts, std::span<RigidStat
             applyImpulse(a, rA, c.normal * -delta);
             applyImpulse(b, rB, c.normal * delta);
         }
-        storeBody(sa, a);
-        storeBody(sb, b);
+        if (movableBody(sa)) storeBody(sa, a);
+        if (movableBody(sb)) storeBody(sb, b);
     }
 }
 

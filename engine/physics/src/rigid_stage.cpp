@@ -27,6 +27,9 @@ constexpr double kMaxWarmStartTurn = 0.25;
 /// Pivots: stiffer than contacts and less damped, as Box2D v3's joints (twice the contact hertz).
 constexpr double kPivotHertz = 120.0;
 constexpr double kPivotDampingRatio = 2.0;
+/// Bodies each worker needs before a per-body loop is shared (below it the calling thread runs it all):
+/// a body's update costs a few nanoseconds, a hand-over about a microsecond.
+constexpr std::size_t kLeastBodiesEach = 256;
 /// A pair of joint ends as one number: rigid body i as i, circle c as -1 - c.
 constexpr std::int64_t kPairBase = std::int64_t{1} << 32;
 constexpr std::int64_t kNoBody = std::numeric_limits<std::int64_t>::min();
@@ -44,6 +47,7 @@ BoundingBox boundsOf(const RoundedPolygon& p, double extra) {
 } // namespace
 
 void RigidStage::prepare(const StepContext& ctx, double dt) {
+    pool_ = ctx.workers;
     circleCount_ = static_cast<int>(ctx.circles.size());
     const std::size_t n = ctx.bodies.size();
     rigidCount_ = n;
@@ -299,19 +303,28 @@ void RigidStage::storeOthers() {
 }
 
 void RigidStage::integrateVelocities(Vec2 gravityStep) {
-    for (std::size_t i = 0; i < rigidCount_; ++i)
-        if (states_[i].inverseMass > 0.0) states_[i].velocity += gravityStep;
+    forShares(pool_, rigidCount_, kLeastBodiesEach, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i)
+            if (states_[i].inverseMass > 0.0) states_[i].velocity += gravityStep;
+    });
 }
 
 void RigidStage::warmStart() {
     loadOthers();
-    measureApproach(contacts_, states_, substep_++);
+    const int substep = substep_++;
+    // Each contact reads its bodies and writes only itself: any share of the list gives the same bits.
+    forShares(pool_, contacts_.size(), kLeastContactsEach, [&](std::size_t first, std::size_t last) {
+        measureApproach(std::span(contacts_).subspan(first, last - first), states_, substep);
+    });
     warmStartPivots(pivots_, view_);
     if (!joints_.empty()) {
         joints_.warmStart();
         loadOthers(); // the joints may have pushed a listed circle
     }
-    warmStartRigidContacts(contacts_, states_, substepTime_, kMaxWarmStartTurn);
+    sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {
+        warmStartRigidContacts(std::span(contacts_).subspan(first, last - first), states_, substepTime_,
+                               kMaxWarmStartTurn);
+    });
     storeOthers();
 }
 
@@ -319,23 +332,42 @@ void RigidStage::solve(double h, bool useBias) {
     solvePivots(pivots_, view_, pivotSoftness_, useBias);
     if (!joints_.empty()) joints_.solve(useBias);
     loadOthers();
-    solveColouredContacts(contacts_, colours_, states_, contactSoftness_, h, useBias);
+    solveColouredContacts(contacts_, colours_, states_, contactSoftness_, h, useBias, pool_);
     storeOthers();
 }
 
 void RigidStage::integratePositions(double h) {
-    for (std::size_t i = 0; i < rigidCount_; ++i) {
-        RigidState& s = states_[i];
-        // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
-        // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
-        if (s.inverseMass > 0.0 || s.inverseInertia > 0.0)
-            clamps_ += clampRigidMotion(s.velocity, s.omega, speedLimit_, spinLimit_);
-        s.displacement += s.velocity * h;
-        if (s.omega == 0.0) continue;
-        s.turn += s.omega * h;
-        s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
+    // Per body, then per contact: each writes only its own slot. Clamps are counted per share and
+    // summed (integers: the sum does not depend on the split).
+    std::int64_t clamps[kMaxWorkers] = {};
+    const auto move = [&](std::size_t first, std::size_t last, std::int64_t& count) {
+        for (std::size_t i = first; i < last; ++i) {
+            RigidState& s = states_[i];
+            // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
+            // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
+            if (s.inverseMass > 0.0 || s.inverseInertia > 0.0)
+                count += clampRigidMotion(s.velocity, s.omega, speedLimit_, spinLimit_);
+            s.displacement += s.velocity * h;
+            if (s.omega == 0.0) continue;
+            s.turn += s.omega * h;
+            s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
+        }
+    };
+    const int workers = pool_ == nullptr ? 1 : pool_->workers();
+    if (workers > 1 && rigidCount_ >= kLeastBodiesEach * static_cast<std::size_t>(workers)) {
+        auto task = [&](int w) {
+            const WorkerPool::Range bodies = pool_->share(rigidCount_, w);
+            move(bodies.begin, bodies.end, clamps[w]);
+            pool_->barrier(); // the arms read both bodies' turns
+            const WorkerPool::Range arms = pool_->share(contacts_.size(), w);
+            refreshArms(std::span(contacts_).subspan(arms.begin, arms.end - arms.begin), states_);
+        };
+        pool_->run(task);
+    } else {
+        move(0, rigidCount_, clamps[0]);
+        refreshArms(contacts_, states_);
     }
-    refreshArms(contacts_, states_);
+    for (int w = 0; w < workers; ++w) clamps_ += clamps[w];
     if (!joints_.empty()) joints_.integrateCircleTurns(h);
 }
 
@@ -343,7 +375,9 @@ void RigidStage::applyRestitution(double threshold) {
     cache_.store(contacts_); // the last substep's impulses, not restitution's one-off bounce
     beforeBounce_ = states_;
     loadOthers();
-    applyRigidRestitution(contacts_, states_, threshold);
+    sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {
+        applyRigidRestitution(std::span(contacts_).subspan(first, last - first), states_, threshold);
+    });
     storeOthers();
     capBounceEnergy();
 }

@@ -83,6 +83,7 @@ private:
     void runFree(std::size_t i);
     bool resolveSweptHit(StepContext& ctx, std::size_t body, int segment, const SweptShape& shape, double t, double dt);
 
+    WorkerPool* pool_ = nullptr; // the world's workers (StepContext::workers), or null
     int circleCount_ = 0;
     double speedLimit_ = 0.0, spinLimit_ = 0.0; // WorldDef::maxTranslation and maxRotation over the step, per second
     std::int64_t clamps_ = 0;                   // substep clamps this step, added to the stats in finish()

@@ -10,6 +10,7 @@
 namespace rube {
 
 struct SlotRemap;
+class WorkerPool;
 
 /// What a method may touch during one step. Kinematic bodies already carry this step's velocity;
 /// a method moves them linearly with it (the world snaps them onto their path afterwards).
@@ -27,6 +28,7 @@ struct StepContext {
         {}; ///< the world's ropes (the world enforces them after the step; auto keeps roped circles together)
     std::span<const Joint> joints =
         {};             ///< the joints that act (the solver models them; auto gives their islands to it)
+    WorkerPool* workers = nullptr; ///< the world's threads (WorldDef::workers); null runs everything here
     bool sleep =
         false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes; rigid bodies: keepsRigidSleep)
 };

@@ -7,6 +7,7 @@
 #include "solver_sleep.hpp"
 #include "speed_limits.hpp"
 #include "step_method.hpp"
+#include "worker_pool.hpp"
 #include "world_handles.hpp"
 
 #include <algorithm>
@@ -57,9 +58,20 @@ std::optional<Method> methodFromName(std::string_view name) {
     return std::nullopt;
 }
 
+namespace {
+
+const WorldDef& checkWorkers(const WorldDef& def) {
+    if (def.workers < 1 || def.workers > kMaxWorkers)
+        throw std::invalid_argument("workers must be from 1 to " + std::to_string(kMaxWorkers) + ", got " +
+                                    std::to_string(def.workers));
+    return def;
+}
+
+} // namespace
+
 World::World(const WorldDef& def)
-    : def_(def), method_(makeMethod(def.method)), tables_(std::make_unique<WorldTables>()),
-      finite_(std::make_unique<FiniteSnapshot>()) {}
+    : def_(checkWorkers(def)), method_(makeMethod(def.method)), tables_(std::make_unique<WorldTables>()),
+      finite_(std::make_unique<FiniteSnapshot>()), workers_(std::make_unique<WorkerPool>(def.workers)) {}
 World::~World() = default;
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
@@ -210,6 +222,7 @@ void World::step() {
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     context.joints = joints_;
+    context.workers = workers_.get();
     // Sleep is the solver's (auto's too): ropes are not part of its islands, so their worlds keep every
     // body awake, as do methods that move every body anyway. Rigid bodies, pivots and joints join the
     // solver's islands (keepsRigidSleep); auto gives the solver only some islands, so with any of them

@@ -41,6 +41,9 @@ struct Aabb {
     bool contains(Vec2 p) const { return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y; }
 };
 
+/// The most worker threads a world may have (WorldDef::workers).
+constexpr int kMaxWorkers = 64;
+
 /// Everything that sets up a world; a caller changes only what it needs.
 struct WorldDef {
     Vec2 gravity{0.0, -9.81};   ///< m/s^2, the same for every dynamic body
@@ -50,6 +53,10 @@ struct WorldDef {
     int maxEventsPerStep = 4096; ///< impacts one step may resolve before it gives up (counted as a cap hit)
     double restingSpeed = 0.0;   ///< approach speeds below this are resting contact; 0 picks 2 |g| dt + 1 mm/s
     int substeps = 8;            ///< solver only: substeps per step
+    /// solver (and auto's solver islands): threads that share the rigid contacts and bodies of a step,
+    /// this one included; 1 starts none. Results are bit for bit the same for any count. 1 to 64
+    /// (World's constructor throws std::invalid_argument otherwise).
+    int workers = 1;
     AirDrag airDrag;             ///< drag of still air on every dynamic circle; none by default
     /// solver and auto: circles that, with everything they touch, stay under `sleepSpeed` (m/s, and
     /// their surfaces' spin) for `timeToSleep` seconds rest until something reaches them; 0 never.
@@ -113,6 +120,7 @@ struct RopeStart;
 struct FiniteSnapshot;
 struct WorldTables;
 struct SlotRemap;
+class WorkerPool;
 
 /// A physics world. Not copyable (it owns its method); movable.
 class World {
@@ -323,6 +331,7 @@ private:
     std::unique_ptr<StepMethod> method_;
     std::unique_ptr<WorldTables> tables_;    ///< handles, and what is disabled (world_handles.hpp)
     std::unique_ptr<FiniteSnapshot> finite_; ///< each body's last finite pose, for isolating one that goes non-finite
+    std::unique_ptr<WorkerPool> workers_;    ///< WorldDef::workers' threads (worker_pool.hpp)
     StepStats stats_;
     double time_ = 0.0;
     bool mayHaveSleepers_ = false; ///< some step let islands sleep since every circle was last woken

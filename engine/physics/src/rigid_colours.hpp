@@ -7,6 +7,7 @@
 #include "rigid_contacts.hpp"
 #include "worker_pool.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -38,42 +39,32 @@ private:
     int starts_[kRigidColours + 2] = {};
 };
 
-/// Contacts of a colour each worker needs before a colour is shared (below it one worker sweeps all).
-constexpr std::size_t kLeastContactsEach = 64;
+/// Contacts in one worker's chunk of a colour: even, so the lanes keep their pairs; a colour of fewer
+/// than two chunks is not worth a hand-over (a contact costs about 40 ns, a hand-over about 1 us).
+constexpr std::size_t kContactChunk = 32;
 
 /// Calls sweep(first, last) over the contacts [first, last) colour after colour, the overflow last
-/// and whole. With `pool`, each large colour is split among the workers (in runs of an even length,
-/// so the lanes keep their pairs) and all meet at a barrier before the next colour. A sweep that
-/// writes only its contacts and their movable bodies gives the same bits for any split, since no two
-/// contacts of a colour share a movable body; the serial order is the colours' order.
+/// and whole. With `pool`, the colours are cut into chunks the workers share, and no worker starts
+/// a colour before the last one is done. A sweep that writes only its contacts and their movable
+/// bodies gives the same bits for any split, since no two contacts of a colour share a movable
+/// body; the serial order is the colours' order.
 template <class Sweep>
 void sweepColours(WorkerPool* pool, const RigidColours& colours, Sweep sweep) {
     const auto at = [&](int colour) { return static_cast<std::size_t>(colours.start(colour)); };
-    const int workers = pool == nullptr ? 1 : pool->workers();
-    const std::size_t least = kLeastContactsEach * static_cast<std::size_t>(workers);
+    std::size_t sizes[kRigidColours + 1], chunks[kRigidColours + 1];
     bool shared = false;
-    for (int colour = 0; colour < kRigidColours && workers > 1; ++colour)
-        shared = shared || at(colour + 1) - at(colour) >= least;
-    if (!shared) {
+    for (int colour = 0; colour <= kRigidColours; ++colour) {
+        sizes[colour] = at(colour + 1) - at(colour);
+        chunks[colour] = colour < kRigidColours ? kContactChunk : std::max<std::size_t>(1, sizes[colour]);
+        shared = shared || (colour < kRigidColours && sizes[colour] >= 2 * kContactChunk);
+    }
+    if (pool == nullptr || pool->workers() == 1 || !shared) {
         for (int colour = 0; colour <= kRigidColours; ++colour)
-            if (at(colour) < at(colour + 1)) sweep(at(colour), at(colour + 1));
+            if (sizes[colour] > 0) sweep(at(colour), at(colour + 1));
         return;
     }
-    auto task = [&](int w) {
-        for (int colour = 0; colour < kRigidColours; ++colour) {
-            const std::size_t first = at(colour), n = at(colour + 1) - first;
-            if (n == 0) continue;
-            if (n < least) { // too few to share: one worker, the others go on to the barrier
-                if (w == 0) sweep(first, first + n);
-            } else {
-                const WorkerPool::Range r = pool->share(n, w, 2);
-                if (r.begin < r.end) sweep(first + r.begin, first + r.end);
-            }
-            pool->barrier();
-        }
-        if (w == 0 && at(kRigidColours) < at(kRigidColours + 1)) sweep(at(kRigidColours), at(kRigidColours + 1));
-    };
-    pool->run(task);
+    auto work = [&](int colour, std::size_t first, std::size_t last) { sweep(at(colour) + first, at(colour) + last); };
+    pool->run(kRigidColours + 1, sizes, chunks, work);
 }
 
 /// solveRigidContacts over the contacts of one colour (or of the overflow), two at a time in the

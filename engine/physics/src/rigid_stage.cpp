@@ -4,6 +4,7 @@
 #include "speed_limits.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,9 +28,13 @@ constexpr double kMaxWarmStartTurn = 0.25;
 /// Pivots: stiffer than contacts and less damped, as Box2D v3's joints (twice the contact hertz).
 constexpr double kPivotHertz = 120.0;
 constexpr double kPivotDampingRatio = 2.0;
-/// Bodies each worker needs before a per-body loop is shared (below it the calling thread runs it all):
+/// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
 /// a body's update costs a few nanoseconds, a hand-over about a microsecond.
-constexpr std::size_t kLeastBodiesEach = 256;
+constexpr std::size_t kBodyChunk = 256;
+/// Contacts in a chunk of a per-contact loop (measureApproach, refreshArms).
+constexpr std::size_t kContactLoopChunk = 64;
+/// Candidate pairs in a chunk of the narrowphase (a manifold costs about 0.1 us).
+constexpr std::size_t kPairChunk = 64;
 /// A pair of joint ends as one number: rigid body i as i, circle c as -1 - c.
 constexpr std::int64_t kPairBase = std::int64_t{1} << 32;
 constexpr std::int64_t kNoBody = std::numeric_limits<std::int64_t>::min();
@@ -136,11 +141,9 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         const std::int64_t x = a.rigid ? a.index : -1 - a.index, y = b.rigid ? b.index : -1 - b.index;
         return std::binary_search(connected_.begin(), connected_.end(), std::min(x, y) * kPairBase + std::max(x, y));
     };
-    const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const RoundedPolygon& pa,
-                         const RoundedPolygon& pb, double speculative, const Material& ma, const Material& mb) {
-        if (tied(a, b)) return;
-        const Manifold m = collideRoundedPolygons(pa, pb, speculative);
-        if (m.count == 0) return;
+    const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
+                         const Material& mb) {
+        if (m.count == 0 || tied(a, b)) return;
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                              ma.bounciness * mb.bounciness));
         contacts_.back().bodyA = solverBodyOf(a);
@@ -181,6 +184,27 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         circleBoxes_[c] = {circle.position - grow, circle.position + grow};
     }
     pairFinder_.find(boxes, circleBoxes_, pairs_);
+    // The narrowphase, each pair's manifold into its own slot (shared among the workers: any split
+    // gives the same manifolds), then the contacts made from them below in pair order, as one loop would.
+    const auto circleDynamic = [&](std::size_t c) {
+        const Circle& circle = ctx.circles[c];
+        return circle.motion == Motion::dynamic && circle.inverseMass > 0.0 && !circleAsleep(c);
+    };
+    manifolds_.resize(pairs_.size());
+    forShares(pool_, pairs_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            const auto i = static_cast<std::size_t>(pairs_[k].body), other = static_cast<std::size_t>(pairs_[k].other);
+            Manifold& m = manifolds_[k];
+            m.count = 0;
+            if (other < n) {
+                if (isDynamic(i) || isDynamic(other))
+                    m = collideRoundedPolygons(shapes_[i], shapes_[other], reach_[i] + reach_[other]);
+            } else if (isDynamic(i) || circleDynamic(other - n)) {
+                m = collideRoundedPolygons(shapes_[i], makeRoundedPolygon(ctx.circles[other - n]),
+                                           reach_[i] + circleReach_[other - n]);
+            }
+        }
+    });
     std::size_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& bi = bodies[i];
@@ -199,8 +223,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                     continue;
                 }
                 const std::size_t before = contacts_.size();
-                add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, shapes_[i], shapes_[j],
-                    reach_[i] + reach_[j], bi.material, bodies[j].material);
+                add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, manifolds_[next], bi.material,
+                    bodies[j].material);
                 if (contacts_.size() == before) continue;
                 if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
                 if (asleep(j)) reached_.push_back(-1 - static_cast<int>(j));
@@ -208,8 +232,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             }
             const std::size_t c = other - n;
             const Circle& circle = ctx.circles[c];
-            const bool circleDynamic = circle.motion == Motion::dynamic && circle.inverseMass > 0.0 && !circleAsleep(c);
-            if (!isDynamic(i) && !circleDynamic) {
+            if (!isDynamic(i) && !circleDynamic(c)) {
                 if (asleep(i) && moving(circle.motion, circle.velocity, 0.0))
                     reached_.push_back(-1 - static_cast<int>(i));
                 if (circleAsleep(c) && moving(bi.motion, bi.velocity, bi.angularVelocity))
@@ -217,8 +240,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                 continue;
             }
             const std::size_t before = contacts_.size();
-            add(side, {static_cast<int>(c), false}, bi.position, circle.position, shapes_[i],
-                makeRoundedPolygon(circle), reach_[i] + circleReach_[c], bi.material, circle.material);
+            add(side, {static_cast<int>(c), false}, bi.position, circle.position, manifolds_[next], bi.material,
+                circle.material);
             if (contacts_.size() == before) continue;
             if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
             if (circleAsleep(c)) reached_.push_back(static_cast<int>(c));
@@ -229,8 +252,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const double reach = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
             const RoundedPolygon shape = makeRoundedPolygon(seg);
             if (!boxes[i].overlaps(boundsOf(shape, reach))) continue;
-            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a, shapes_[i], shape,
-                reach_[i] + reach, bi.material, seg.material);
+            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a,
+                collideRoundedPolygons(shapes_[i], shape, reach_[i] + reach), bi.material, seg.material);
         }
     }
     if (anyAsleep) reachBySegments(ctx, dt);
@@ -303,7 +326,7 @@ void RigidStage::storeOthers() {
 }
 
 void RigidStage::integrateVelocities(Vec2 gravityStep) {
-    forShares(pool_, rigidCount_, kLeastBodiesEach, [&](std::size_t first, std::size_t last) {
+    forShares(pool_, rigidCount_, kBodyChunk, [&](std::size_t first, std::size_t last) {
         for (std::size_t i = first; i < last; ++i)
             if (states_[i].inverseMass > 0.0) states_[i].velocity += gravityStep;
     });
@@ -313,7 +336,7 @@ void RigidStage::warmStart() {
     loadOthers();
     const int substep = substep_++;
     // Each contact reads its bodies and writes only itself: any share of the list gives the same bits.
-    forShares(pool_, contacts_.size(), kLeastContactsEach, [&](std::size_t first, std::size_t last) {
+    forShares(pool_, contacts_.size(), kContactLoopChunk, [&](std::size_t first, std::size_t last) {
         measureApproach(std::span(contacts_).subspan(first, last - first), states_, substep);
     });
     warmStartPivots(pivots_, view_);
@@ -337,10 +360,11 @@ void RigidStage::solve(double h, bool useBias) {
 }
 
 void RigidStage::integratePositions(double h) {
-    // Per body, then per contact: each writes only its own slot. Clamps are counted per share and
+    // Per body, then per contact: each writes only its own slot. Clamps are counted per chunk and
     // summed (integers: the sum does not depend on the split).
-    std::int64_t clamps[kMaxWorkers] = {};
-    const auto move = [&](std::size_t first, std::size_t last, std::int64_t& count) {
+    std::atomic<std::int64_t> clamps{0};
+    const auto move = [&](std::size_t first, std::size_t last) {
+        std::int64_t count = 0;
         for (std::size_t i = first; i < last; ++i) {
             RigidState& s = states_[i];
             // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
@@ -352,22 +376,24 @@ void RigidStage::integratePositions(double h) {
             s.turn += s.omega * h;
             s.turnRotation = {std::cos(s.turn), std::sin(s.turn)};
         }
+        if (count != 0) clamps.fetch_add(count, std::memory_order_relaxed);
     };
-    const int workers = pool_ == nullptr ? 1 : pool_->workers();
-    if (workers > 1 && rigidCount_ >= kLeastBodiesEach * static_cast<std::size_t>(workers)) {
-        auto task = [&](int w) {
-            const WorkerPool::Range bodies = pool_->share(rigidCount_, w);
-            move(bodies.begin, bodies.end, clamps[w]);
-            pool_->barrier(); // the arms read both bodies' turns
-            const WorkerPool::Range arms = pool_->share(contacts_.size(), w);
-            refreshArms(std::span(contacts_).subspan(arms.begin, arms.end - arms.begin), states_);
+    const auto arms = [&](std::size_t first, std::size_t last) {
+        refreshArms(std::span(contacts_).subspan(first, last - first), states_);
+    };
+    if (pool_ != nullptr && pool_->workers() > 1 && rigidCount_ >= 2 * kBodyChunk) {
+        // Two phases: the arms read both bodies' turns.
+        const std::size_t sizes[2] = {rigidCount_, contacts_.size()}, chunks[2] = {kBodyChunk, kContactLoopChunk};
+        auto work = [&](int phase, std::size_t first, std::size_t last) {
+            if (phase == 0) move(first, last);
+            else arms(first, last);
         };
-        pool_->run(task);
+        pool_->run(2, sizes, chunks, work);
     } else {
-        move(0, rigidCount_, clamps[0]);
-        refreshArms(contacts_, states_);
+        move(0, rigidCount_);
+        arms(0, contacts_.size());
     }
-    for (int w = 0; w < workers; ++w) clamps_ += clamps[w];
+    clamps_ += clamps.load(std::memory_order_relaxed);
     if (!joints_.empty()) joints_.integrateCircleTurns(h);
 }
 

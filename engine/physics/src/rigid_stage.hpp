@@ -117,6 +117,7 @@ private:
     std::vector<double> circleReach_; // per circle: its speculative margin for the step
     RigidPairFinder pairFinder_;
     std::vector<RigidPair> pairs_;
+    std::vector<Manifold> manifolds_; // per pair of pairs_: its manifold (none when neither side moves)
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)

@@ -1,14 +1,18 @@
 #pragma once
-// Internal: the World's worker threads (WorldDef::workers). A small persistent pool: run() hands one
-// task to every worker at once (worker 0 is the calling thread) and returns when all are done;
-// inside a task, barrier() waits for every worker, so a task can sweep the contacts colour after
-// colour. Nothing waits on a clock: a worker spins a bounded number of times, then blocks on the
-// atomic (a futex), so a loaded machine loses no time to a sleeping worker. Which worker does which
-// share is fixed by the share's index, never by who came first, so results do not depend on timing.
-// Not part of the public API.
+// Internal: the World's worker threads (WorldDef::workers). A small persistent pool that runs work
+// in phases: each phase's items are cut into chunks of a fixed length, every thread (the caller
+// and the workers) claims chunks from a shared counter until none is left, and no thread starts
+// phase p + 1 before every chunk of phase p is done. Which thread does a chunk is left to chance,
+// so a chunk's result must not depend on it: the rigid solver hands out only work whose items
+// write disjoint slots (the contacts of one colour, one body each), which gives the same bits for
+// any split. A worker the machine has not scheduled holds nothing up: the others take its chunks,
+// and the caller never waits for a worker that has not joined. Nothing waits on a clock: a waiting
+// thread spins a bounded number of times, then blocks on the atomic (a futex). Not part of the
+// public API.
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <thread>
 #include <vector>
 
@@ -16,6 +20,9 @@ namespace rube {
 
 class WorkerPool {
 public:
+    /// The most phases one run may have (a sweep over the rigid contacts' colours and the overflow).
+    static constexpr int kMaxPhases = 16;
+
     /// Starts workers - 1 threads (none for 1); workers must be at least 1.
     explicit WorkerPool(int workers);
     /// Stops and joins the threads.
@@ -25,64 +32,52 @@ public:
 
     int workers() const { return workers_; }
 
-    /// Calls task(w) for every worker w in [0, workers()), w = 0 on the calling thread, and returns
-    /// once every call has returned. Not reentrant: a task must not call run().
-    template <class Task>
-    void run(Task& task) {
-        if (workers_ == 1) {
-            task(0);
-            return;
-        }
-        dispatch([](void* t, int w) { (*static_cast<Task*>(t))(w); }, &task);
+    /// Runs `phases` phases of sizes[p] items in chunks of chunks[p] items (> 0): work(p, first,
+    /// last) once for each chunk [first, last), on any thread; returns when all are done. Phase p + 1
+    /// starts after every chunk of phase p is done, and what they wrote is then visible to all.
+    /// Not reentrant: work must not call run().
+    template <class Work>
+    void run(int phases, const std::size_t* sizes, const std::size_t* chunks, Work& work) {
+        dispatch(
+            phases, sizes, chunks,
+            [](void* w, int p, std::size_t a, std::size_t b) { (*static_cast<Work*>(w))(p, a, b); }, &work);
     }
 
-    /// Inside a task: returns once every worker has reached it (what each wrote before is then
-    /// visible to all).
-    void barrier();
-
-    /// Worker w's share [begin, end) of n items split into workers() runs as equal as can be, each
-    /// starting at a multiple of `align` (so pairs of contacts stay together).
-    struct Range {
-        std::size_t begin, end;
-    };
-    Range share(std::size_t n, int w, std::size_t align = 1) const;
-
 private:
-    using Call = void (*)(void*, int);
-    void dispatch(Call call, void* task);
-    void loop(int w);
-    /// Waits until `value` differs from `seen` (a bounded spin, then the atomic's futex wait).
-    static void awaitChange(const std::atomic<unsigned>& value, unsigned seen);
+    using Call = void (*)(void*, int, std::size_t, std::size_t);
+    void dispatch(int phases, const std::size_t* sizes, const std::size_t* chunks, Call call, void* work);
+    void work();
+    void loop();
 
     int workers_;
     std::vector<std::thread> threads_;
+    // The run in progress, set before its generation is published.
     Call call_ = nullptr;
-    void* task_ = nullptr;
+    void* work_ = nullptr;
+    int phases_ = 0;
+    std::size_t size_[kMaxPhases] = {}, chunk_[kMaxPhases] = {}, chunks_[kMaxPhases] = {};
+    struct alignas(64) Counter {
+        std::atomic<std::size_t> value{0};
+    };
+    Counter next_[kMaxPhases];                             // per phase: the next chunk to claim
+    Counter done_[kMaxPhases];                             // per phase: chunks finished
+    alignas(64) std::atomic<std::uint64_t> generation_{0}; // bumped to publish a run
+    std::atomic<std::uint64_t> closed_{0};                 // the last run whose chunks are all done
+    std::atomic<int> active_{0};                           // workers inside a run
     bool stop_ = false;
-    std::atomic<unsigned> generation_{0}; // bumped to start a task (or to stop)
-    std::atomic<int> running_{0};         // workers still in the task
-    std::atomic<int> arrived_{0};         // at the current barrier
-    std::atomic<unsigned> barrierGeneration_{0};
 };
 
-} // namespace rube
-
-namespace rube {
-
-/// Calls part(begin, end) over shares of [0, n): one share per worker when every worker gets at
-/// least `leastEach` items (and `pool` has more than one), else part(0, n) here. For loops whose
-/// items write only their own slots, so any split gives the same bits.
+/// Calls part(begin, end) over chunks of [0, n) on the pool's threads when there are at least two
+/// chunks of `chunk` items (and more than one worker), else part(0, n) here. For loops whose items
+/// write only their own slots, so any split gives the same bits.
 template <class Part>
-void forShares(WorkerPool* pool, std::size_t n, std::size_t leastEach, Part part) {
-    if (pool == nullptr || pool->workers() == 1 || n < leastEach * static_cast<std::size_t>(pool->workers())) {
+void forShares(WorkerPool* pool, std::size_t n, std::size_t chunk, Part part) {
+    if (pool == nullptr || pool->workers() == 1 || n < 2 * chunk) {
         part(std::size_t{0}, n);
         return;
     }
-    auto task = [&](int w) {
-        const WorkerPool::Range r = pool->share(n, w);
-        if (r.begin < r.end) part(r.begin, r.end);
-    };
-    pool->run(task);
+    auto work = [&](int, std::size_t first, std::size_t last) { part(first, last); };
+    pool->run(1, &n, &chunk, work);
 }
 
 } // namespace rube

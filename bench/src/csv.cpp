@@ -12,7 +12,7 @@ namespace bench {
 const char* const kCsvHeader =
     "scene,engine,kind,dt_s,bodies,steps,repeats,ms_per_step,us_per_body_step,ms_per_sim_second,"
     "error,error_kind,error2,error2_kind,max_overlap_m,tunnels,escapes,caps_hit,nan,timeout,momentum_error_rel,"
-    "ms_per_step_last_second";
+    "ms_per_step_last_second,workers,cpu_ms_per_step";
 
 namespace {
 
@@ -37,7 +37,8 @@ void writeCsv(std::ostream& out, std::span<const Row> rows) {
             << ',' << number(r.metrics.overlap) << ','
             << (r.metrics.tunnels >= 0 ? std::to_string(r.metrics.tunnels) : "") << ',' << r.escapes << ',' << r.capsHit
             << ',' << (r.nonFinite ? 1 : 0) << ',' << (r.timeout ? 1 : 0) << ',' << number(r.metrics.momentum) << ','
-            << (timed ? number(r.msPerStepLastSecond) : "") << '\n';
+            << (timed ? number(r.msPerStepLastSecond) : "") << ',' << r.workers << ','
+            << (timed ? number(r.cpuMsPerStep) : "") << '\n';
     }
 }
 

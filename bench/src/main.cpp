@@ -7,6 +7,7 @@
 #include "front.hpp"
 #include "runner.hpp"
 #include "scaling_chart.hpp"
+#include "rube/physics/world.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -100,6 +101,7 @@ int main(int argc, char** argv) {
     int repeats = 5;
     double runTimeLimit = 8.0;
     bool rubeNoSleep = false, chipmunkSleep = false;
+    std::vector<int> rubeWorkers;
     app.add_flag("--quick", quick, "tiny scenes, one repeat, two time steps: checks the bench runs, not its speed");
     app.add_flag("--list", list, "list the scenes and engines and exit");
     app.add_option("--csv", csvPath,
@@ -128,6 +130,11 @@ int main(int argc, char** argv) {
     app.add_option("--run-limit", runTimeLimit, "seconds before one run is abandoned and flagged as a timeout");
     app.add_flag("--rube-no-sleep", rubeNoSleep,
                  "rube's methods without sleeping islands (sleep_speed 0): what a pile costs while it never rests");
+    app.add_option("--rube-workers", rubeWorkers,
+                   "rube's worker threads (WorldDef::workers), one or more counts: every rube row is run once per "
+                   "count, the count in the CSV's workers column, processor time beside the wall clock in "
+                   "cpu_ms_per_step (default 1; the chart and the auto table take the first count's rows)")
+        ->check(CLI::Range(1, rube::kMaxWorkers));
     app.add_flag("--chipmunk-sleep", chipmunkSleep,
                  "Chipmunk with sleeping on (0.5 s idle; Chipmunk's default is off, Box2D's on)");
     CLI11_PARSE(app, argc, argv);
@@ -170,6 +177,7 @@ int main(int argc, char** argv) {
     options.runTimeLimit = runTimeLimit;
     options.rubeSleep = !rubeNoSleep;
     options.chipmunkSleep = chipmunkSleep;
+    if (rubeWorkers.empty()) rubeWorkers = {1};
 
     std::vector<bench::Row> rows;
     std::vector<std::string> sceneOrder, scalingOrder, boxScalingOrder;
@@ -209,29 +217,37 @@ int main(int argc, char** argv) {
             // in these scenes), so it is flagged as a timeout without spending the run limit again.
             std::vector<int> ordered = engineRates;
             std::sort(ordered.begin(), ordered.end());
-            std::optional<bench::Row> timedOut;
-            for (const int rate : ordered) {
-                if (timedOut) {
-                    bench::Row row = *timedOut;
-                    row.timeStep = 1.0 / rate;
-                    row.steps = static_cast<int>(std::lround(timedOut->steps * timedOut->timeStep * rate));
-                    std::fprintf(stderr, "%-18s %-16s %4d Hz  TIMEOUT (not run: %d Hz timed out)\n", scene.name.c_str(),
-                                 engine.name.c_str(), rate, static_cast<int>(std::lround(1.0 / timedOut->timeStep)));
+            const std::vector<int> workerCounts = engine.kind == bench::EngineKind::peer ? std::vector<int>{1}
+                                                                                         : rubeWorkers;
+            for (const int workers : workerCounts) {
+                sceneOptions.rubeWorkers = workers;
+                std::optional<bench::Row> timedOut;
+                for (const int rate : ordered) {
+                    if (timedOut) {
+                        bench::Row row = *timedOut;
+                        row.timeStep = 1.0 / rate;
+                        row.steps = static_cast<int>(std::lround(timedOut->steps * timedOut->timeStep * rate));
+                        std::fprintf(stderr, "%-18s %-16s %4d Hz  TIMEOUT (not run: %d Hz timed out)\n",
+                                     scene.name.c_str(), engine.name.c_str(), rate,
+                                     static_cast<int>(std::lround(1.0 / timedOut->timeStep)));
+                        rows.push_back(row);
+                        continue;
+                    }
+                    const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
+                    if (row.lacksJoint) {
+                        std::fprintf(stderr, "%-18s %-16s does not have the scene's joint: not run\n",
+                                     scene.name.c_str(), engine.name.c_str());
+                        break;
+                    }
+                    if (row.timeout) timedOut = row;
+                    std::fprintf(
+                        stderr,
+                        "%-18s %-16s %4d Hz %2d w  %10.4f ms/step (cpu %9.4f, last 1 s %9.4f)  error %-12.4g %s%s\n",
+                        scene.name.c_str(), engine.name.c_str(), rate, row.workers, row.msPerStep, row.cpuMsPerStep,
+                        row.msPerStepLastSecond, row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
+                        row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                     rows.push_back(row);
-                    continue;
                 }
-                const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
-                if (row.lacksJoint) {
-                    std::fprintf(stderr, "%-18s %-16s does not have the scene's joint: not run\n", scene.name.c_str(),
-                                 engine.name.c_str());
-                    break;
-                }
-                if (row.timeout) timedOut = row;
-                std::fprintf(stderr, "%-18s %-16s %4d Hz  %10.4f ms/step (last 1 s %9.4f)  error %-12.4g %s%s\n",
-                             scene.name.c_str(), engine.name.c_str(), rate, row.msPerStep, row.msPerStepLastSecond,
-                             row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
-                             row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
-                rows.push_back(row);
             }
         }
     }
@@ -247,6 +263,8 @@ int main(int argc, char** argv) {
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
 
     // Where auto stands: written whenever auto ran, so a reader sees every step it was beaten, if any.
+    // The chart and the auto table compare one row per engine: the first worker count's.
+    std::erase_if(rows, [&](const bench::Row& r) { return !r.peer && r.workers != rubeWorkers.front(); });
     const std::vector<bench::AutoVerdict> verdicts = bench::judgeAuto(rows, sceneOrder);
     if (!verdicts.empty() && !frontPath.empty()) {
         std::ofstream front = openResultFile(frontPath);

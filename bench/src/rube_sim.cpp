@@ -117,6 +117,7 @@ private:
         def.timeStep = spec.timeStep;
         def.method = method;
         if (!spec.rubeSleep) def.sleepSpeed = 0.0;
+        def.workers = spec.rubeWorkers;
         return def;
     }
 

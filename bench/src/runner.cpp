@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <vector>
 
 namespace bench {
@@ -14,7 +15,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<Sim> buildSim(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options) {
-    auto sim = engine.make({scene.gravity, timeStep, options.rubeSleep, options.chipmunkSleep});
+    auto sim = engine.make({scene.gravity, timeStep, options.rubeSleep, options.chipmunkSleep, options.rubeWorkers});
     scene.build(*sim, options.size);
     return sim;
 }
@@ -62,6 +63,7 @@ void measure(const Scene& scene, const Engine& engine, double timeStep, const Ru
 struct Timing {
     double seconds = 0.0;     // the whole step loop
     double lastSeconds = 0.0; // its last `lastSteps` steps
+    double cpuSeconds = 0.0;  // the whole step loop's processor time, every thread's
 };
 
 // One timed run: building the world is outside the clock, the step loop is all that is inside it
@@ -69,12 +71,15 @@ struct Timing {
 Timing timedRun(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options, int steps,
                 int lastSteps) {
     auto sim = buildSim(scene, engine, timeStep, options);
+    const std::clock_t cpuStart = std::clock();
     const auto start = Clock::now();
     for (int step = 0; step < steps - lastSteps; ++step) sim->step();
     const auto split = Clock::now();
     for (int step = steps - lastSteps; step < steps; ++step) sim->step();
     const auto stop = Clock::now();
-    return {std::chrono::duration<double>(stop - start).count(), std::chrono::duration<double>(stop - split).count()};
+    const std::clock_t cpuStop = std::clock();
+    return {std::chrono::duration<double>(stop - start).count(), std::chrono::duration<double>(stop - split).count(),
+            static_cast<double>(cpuStop - cpuStart) / CLOCKS_PER_SEC};
 }
 
 double median(std::vector<double> values) {
@@ -91,6 +96,7 @@ Row runScene(const Scene& scene, const Engine& engine, double timeStep, const Ru
     row.scene = scene.name;
     row.engine = engine.name;
     row.peer = engine.kind == EngineKind::peer;
+    row.workers = row.peer ? 1 : options.rubeWorkers;
     row.errorName = scene.errorName;
     row.error2Name = scene.error2Name;
     row.timeStep = timeStep;
@@ -102,11 +108,12 @@ Row runScene(const Scene& scene, const Engine& engine, double timeStep, const Ru
     if (row.timeout || row.lacksJoint) return row;
 
     const int lastSteps = std::min(row.steps, std::max(1, static_cast<int>(std::lround(1.0 / timeStep))));
-    std::vector<double> seconds, lastSeconds;
+    std::vector<double> seconds, lastSeconds, cpuSeconds;
     const auto time = [&] {
         const Timing t = timedRun(scene, engine, timeStep, options, row.steps, lastSteps);
         seconds.push_back(t.seconds);
         lastSeconds.push_back(t.lastSeconds);
+        cpuSeconds.push_back(t.cpuSeconds);
     };
     time();
     const double first = seconds.front();
@@ -121,6 +128,7 @@ Row runScene(const Scene& scene, const Engine& engine, double timeStep, const Ru
     row.repeats = static_cast<int>(seconds.size());
     row.msPerStep = 1e3 * whole / row.steps;
     row.msPerStepLastSecond = 1e3 * median(lastSeconds) / lastSteps;
+    row.cpuMsPerStep = 1e3 * median(cpuSeconds) / row.steps;
     row.usPerBodyStep = row.bodies > 0 ? 1e6 * whole / (static_cast<double>(row.steps) * row.bodies) : 0.0;
     row.msPerSimSecond = row.msPerStep / timeStep;
     return row;

@@ -17,6 +17,7 @@ struct RunOptions {
     double runTimeLimit = 8.0;  ///< seconds: a measurement run past this is abandoned (flagged "timeout")
     bool rubeSleep = true;      ///< see WorldSpec
     bool chipmunkSleep = false; ///< see WorldSpec
+    int rubeWorkers = 1;        ///< see WorldSpec (the peers run on one thread whatever it says)
 };
 
 /// One CSV row: what one scene cost and how wrong it was on one engine at one time step.
@@ -29,6 +30,10 @@ struct Row {
     /// The same median clock over the last simulated second's steps alone: what a scene costs once
     /// it has settled (asleep, where the engine sleeps), beside msPerStep's whole run.
     double msPerStepLastSecond = 0.0;
+    /// The process's processor time per step (every thread's, std::clock), median over the same runs:
+    /// with workers, what the threads cost together beside msPerStep's wall clock.
+    double cpuMsPerStep = 0.0;
+    int workers = 1; ///< rube's WorldDef::workers (1 for the peers)
     Metrics metrics;
     std::int64_t capsHit = 0;
     int escapes = 0;

@@ -71,6 +71,7 @@ struct WorldSpec {
     double timeStep = 1.0 / 60;
     bool rubeSleep = true;      ///< rube's sleeping islands, on by default as in a level (--rube-no-sleep: off)
     bool chipmunkSleep = false; ///< Chipmunk's sleeping, off by default in Chipmunk (--chipmunk-sleep: 0.5 s)
+    int rubeWorkers = 1;        ///< rube's WorldDef::workers (--rube-workers)
 };
 
 /// A ball's state as read back after a step (outside the timed loop).

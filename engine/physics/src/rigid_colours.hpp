@@ -2,7 +2,8 @@
 // Internal: the rigid contacts grouped into colours, so that no two contacts of a colour share a
 // movable body (Box2D v3's graph colouring). A sweep still visits every contact once, colour after
 // colour, but consecutive contacts of a colour do not wait on each other's velocities, so the
-// processor overlaps them (and a worker could take a colour's share). Not part of the public API.
+// processor overlaps them, and the world's workers share a colour's contacts (sweepColours). Not part
+// of the public API.
 
 #include "rigid_contacts.hpp"
 #include "worker_pool.hpp"

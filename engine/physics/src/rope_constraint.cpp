@@ -104,7 +104,10 @@ void enforceRopes(std::span<Circle> circles, std::span<const Rope> ropes, std::s
         const Vec2 vb = b ? b->velocity : Vec2{};
         Vec2 relative = a.velocity - vb;
         const RopeStart& start = starts[k];
-        const bool freeSwing = start.taut && !hitSomething(impacts, rope.circle) &&
+        // Asleep (solver_sleep.hpp: zero velocity, put to sleep within this step's method, after it
+        // moved them g dt^2 past the rope): the ends are only put back L apart where they lie.
+        const bool asleep = a.sleep.asleep && (!b || b->sleep.asleep || wb == 0.0);
+        const bool freeSwing = start.taut && !asleep && !hitSomething(impacts, rope.circle) &&
                                (!b || !hitSomething(impacts, rope.other));
         // Where the ends would be apart by now: the method's word, or semi-implicit Euler's for a free swing.
         const Vec2 offset = freeSwing ? start.offset + relative * dt : a.position - (b ? b->position : rope.anchor);

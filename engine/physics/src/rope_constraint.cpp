@@ -107,6 +107,11 @@ void enforceRopes(std::span<Circle> circles, std::span<const Rope> ropes, std::s
         // Asleep (solver_sleep.hpp: zero velocity, put to sleep within this step's method, after it
         // moved them g dt^2 past the rope): the ends are only put back L apart where they lie.
         const bool asleep = a.sleep.asleep && (!b || b->sleep.asleep || wb == 0.0);
+        if (asleep) {
+            // Put back only when stretched (once, the step it fell asleep): no square root otherwise.
+            const Vec2 d = a.position - (b ? b->position : rope.anchor);
+            if (d.lengthSquared() <= rope.length * rope.length) continue;
+        }
         const bool freeSwing = start.taut && !asleep && !hitSomething(impacts, rope.circle) &&
                                (!b || !hitSomething(impacts, rope.other));
         // Where the ends would be apart by now: the method's word, or semi-implicit Euler's for a free swing.

@@ -32,6 +32,13 @@ Vec2 tautDirection(std::span<const Circle> circles, const Rope& rope) {
     return d / distance;
 }
 
+/// Neither end can move this step (asleep, or not dynamic): the rope changes no velocity.
+bool asleepOrFixed(std::span<const Circle> circles, const Rope& rope) {
+    const auto still = [](const Circle& c) { return c.sleep.asleep || c.motion != Motion::dynamic; };
+    return still(circles[static_cast<std::size_t>(rope.circle)]) &&
+           (rope.other < 0 || still(circles[static_cast<std::size_t>(rope.other)]));
+}
+
 bool awakeOrMoving(const Circle& c) {
     return c.motion == Motion::dynamic ? !c.sleep.asleep && c.inverseMass > 0.0
                                        : c.motion == Motion::kinematic && c.velocity != Vec2{};
@@ -50,7 +57,7 @@ std::span<const Vec2> SleepIslands::ropeVelocities(std::span<const Circle> circl
     for (const Rope& rope : ropes) chained = chained || (acts(rope, circles.size()) && rope.other >= 0);
     for (int pass = 0; pass <= (chained ? kChainPasses : 0); ++pass)
         for (const Rope& rope : ropes) {
-            if (!acts(rope, circles.size())) continue;
+            if (!acts(rope, circles.size()) || asleepOrFixed(circles, rope)) continue;
             const Vec2 n = tautDirection(circles, rope);
             if (n == Vec2{}) continue;
             const auto a = static_cast<std::size_t>(rope.circle);

@@ -2,8 +2,9 @@
 // towards its other end, and a circle's speed is judged as the rope pass will leave it. So a weight
 // hanging still sleeps, a pendulum that drag brings to rest sleeps no sooner and no later than its
 // decay allows, and a ball that strikes it, a moving rope end or a cut wakes exactly its island.
-// Under the solver; auto's exact islands (a lone pendulum touches nothing with friction) keep exact's
-// behaviour and stay awake, which the last case pins down.
+// Under the solver, and under auto where the island is the solver's (balls with friction on a floor);
+// auto's exact islands (a lone pendulum touches nothing with friction) keep exact's behaviour and
+// stay awake, which one case pins down.
 #include "rube/physics/rope.hpp"
 #include "rube/physics/world.hpp"
 
@@ -233,4 +234,45 @@ TEST_CASE("rope sleep: under auto a lone pendulum is exact's and keeps exact's b
     for (int s = 0; s < 120; ++s) world.step();
     CHECK_FALSE(world.circle(weight).sleep.asleep);
     CHECK(world.stats().autoSolverSteps == 0);
+}
+
+TEST_CASE("rope sleep: under auto, roped balls on a floor with friction (the solver's island) sleep and wake",
+          "[sleep][rope]") {
+    // Friction between the balls and the floor makes the island the solver's (method_auto.cpp), which
+    // sleeps with its ropes as under the solver; a rope between the two balls ties them into one island.
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
+    World world(ropeDef(method));
+    SegmentDef floor;
+    floor.a = {-10.0, 0.0};
+    floor.b = {10.0, 0.0};
+    floor.material = {0.0, 1.0};
+    world.addSegment(floor);
+    CircleDef ballDef;
+    ballDef.radius = 0.2;
+    ballDef.material = {0.0, 0.5};
+    ballDef.position = {0.0, 0.2};
+    const CircleId a = world.addCircle(ballDef);
+    ballDef.position = {1.0, 0.2};
+    const CircleId b = world.addCircle(ballDef);
+    world.addRope(RopeDef{a, {}, {-1.0, 0.2}, 1.0}); // taut, along the floor
+    world.addRope(RopeDef{b, a, {}, 1.0});
+    for (int s = 0; s < 60; ++s) world.step();
+    REQUIRE(world.circle(a).sleep.asleep);
+    REQUIRE(world.circle(b).sleep.asleep);
+    CHECK(world.circle(a).sleep.island == world.circle(b).sleep.island);
+    // A ball rolled at b wakes both (one island through the rope) and pulls the rope taut.
+    CircleDef rolled = ballDef;
+    rolled.position = {3.0, 0.2};
+    rolled.velocity = {-3.0, 0.0};
+    world.addCircle(rolled);
+    bool wokeA = false, wokeB = false;
+    for (int s = 0; s < 60; ++s) {
+        world.step();
+        wokeA = wokeA || !world.circle(a).sleep.asleep;
+        wokeB = wokeB || !world.circle(b).sleep.asleep;
+    }
+    CHECK(wokeA);
+    CHECK(wokeB);
+    if (method == Method::automatic) CHECK(world.stats().autoSolverSteps > 0);
 }

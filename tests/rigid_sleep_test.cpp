@@ -1,4 +1,5 @@
-// Sleeping for rigid bodies (issue 26): a settled stack of boxes sleeps; a box its contacts cannot
+// Sleeping for rigid bodies (issue 26), under the solver and under auto (whose solver islands sleep
+// the same way): a settled stack of boxes sleeps; a box its contacts cannot
 // hold (a slope steeper than its friction angle), or an island a running motor drives, never does; a
 // ball, a setter or a motor wakes exactly the island it reaches; and sleeping moves nothing a
 // settled scene shows.
@@ -19,9 +20,11 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 
-WorldDef solverDef(double sleepSpeed = WorldDef{}.sleepSpeed) {
+/// The solver, or auto, which gives the solver every island with a turning body, pivot or joint
+/// (method_auto.cpp) and lets it sleep there: every test runs under both.
+WorldDef sleepDef(Method method, double sleepSpeed = WorldDef{}.sleepSpeed) {
     WorldDef def;
-    def.method = Method::solver;
+    def.method = method;
     def.gravity = {0.0, -10.0};
     def.sleepSpeed = sleepSpeed;
     return def;
@@ -75,11 +78,13 @@ int stepsToSleep(World& world, const std::vector<BodyId>& ids, int most) {
 } // namespace
 
 TEST_CASE("rigid sleep: a settled pyramid falls asleep within a bound, and then costs no contacts", "[sleep][rigid]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     // Stacked exactly, the boxes start at rest and settle by millimetres: each must stay under
     // sleepSpeed for timeToSleep, so the whole island sleeps after timeToSleep plus the settling,
     // which the bound allows a second for (Box2D's pyramids sleep after about as long).
     const int base = GENERATE(1, 3, 6, 10);
-    World world(solverDef());
+    World world(sleepDef(method));
     addFloor(world);
     const std::vector<BodyId> ids = addPyramid(world, base, 0.0);
     const double dt = world.def().timeStep;
@@ -100,6 +105,8 @@ TEST_CASE("rigid sleep: a settled pyramid falls asleep within a bound, and then 
 
 TEST_CASE("rigid sleep: a box on a slope steeper than its friction angle never sleeps, on a shallower one it does",
           "[sleep][rigid]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     // On a slope of angle theta a box slides with a = g (sin theta - mu cos theta) once theta exceeds
     // atan(mu). Just past it, a is tiny: at 0.05 degree over, a = g (cos t + mu sin t) 0.05 degree,
     // about 0.01 m/s^2, so it stays under sleepSpeed (0.01 m/s) for the whole of timeToSleep (0.5 s):
@@ -108,7 +115,7 @@ TEST_CASE("rigid sleep: a box on a slope steeper than its friction angle never s
     const double over = GENERATE(0.05, 0.2, 3.0); // degrees past the friction angle
     const double sign = GENERATE(1.0, -1.0);      // steeper, or shallower by as much
     const double theta = std::atan(mu) + sign * over * kDegree;
-    World world(solverDef());
+    World world(sleepDef(method));
     // A long slope through the origin, falling to the left; the floor's friction is 1, the box's mu.
     const Vec2 along{std::cos(theta), std::sin(theta)};
     SegmentDef slope = line(along * -60.0, along * 20.0);
@@ -138,9 +145,11 @@ TEST_CASE("rigid sleep: a box on a slope steeper than its friction angle never s
 }
 
 TEST_CASE("rigid sleep: a ball dropped on a sleeping pyramid wakes its island and no other", "[sleep][rigid]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     const double gap = GENERATE(3.0, 8.0); // between the two pyramids' bases
     const int base = 4;
-    World world(solverDef());
+    World world(sleepDef(method));
     addFloor(world);
     const std::vector<BodyId> left = addPyramid(world, base, 0.0);
     const std::vector<BodyId> right = addPyramid(world, base, base + gap);
@@ -166,8 +175,10 @@ TEST_CASE("rigid sleep: a ball dropped on a sleeping pyramid wakes its island an
 }
 
 TEST_CASE("rigid sleep: a sleeping seesaw wakes and tips when a ball lands on one end", "[sleep][rigid][joints]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     const bool pivot = GENERATE(false, true); // a pivot, or a revolute joint to the world
-    World world(solverDef());
+    World world(sleepDef(method));
     addFloor(world);
     const double halfLength = 2.0;
     const BodyId plank = world.addBody(box({0.0, 1.0}, {halfLength, 0.1}));
@@ -196,10 +207,12 @@ TEST_CASE("rigid sleep: a sleeping seesaw wakes and tips when a ball lands on on
 
 TEST_CASE("rigid sleep: a running motor keeps its island awake, switched off it sleeps, on again it wakes",
           "[sleep][rigid][joints]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     // A motor speed whose rim speed, omega times the bounding radius, is under sleepSpeed: slow
     // enough to sleep by speed alone, so only the motor rule keeps it awake.
     const double speed = GENERATE(0.002, -0.005); // rad/s
-    World world(solverDef());
+    World world(sleepDef(method));
     const BodyId wheel = world.addBody(box({0.0, 2.0}, {0.5, 0.5}));
     REQUIRE(std::abs(speed) * boundingRadius(world.body(wheel)) < world.def().sleepSpeed);
     JointDef hinge;
@@ -222,12 +235,14 @@ TEST_CASE("rigid sleep: a running motor keeps its island awake, switched off it 
 }
 
 TEST_CASE("rigid sleep: sleeping on or off, a settled scene rests in the same place", "[sleep][rigid]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     // Sleeping stops a body only after it has stayed under sleepSpeed for timeToSleep; the awake
     // run's bodies are at rest by then too, so the two agree to within what a body creeps in
     // timeToSleep at sleepSpeed (5 mm), the bound checked.
     const int base = GENERATE(3, 5);
     const auto run = [&](double sleepSpeed) {
-        World world(solverDef(sleepSpeed));
+        World world(sleepDef(method, sleepSpeed));
         addFloor(world);
         addPyramid(world, base, 0.0);
         // A few dominoes and a ball on the floor beside it.
@@ -248,8 +263,10 @@ TEST_CASE("rigid sleep: sleeping on or off, a settled scene rests in the same pl
 }
 
 TEST_CASE("rigid sleep: deterministic, the same state hash run twice", "[sleep][rigid][determinism]") {
-    const auto run = [] {
-        World world(solverDef());
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
+    const auto run = [method] {
+        World world(sleepDef(method));
         addFloor(world);
         addPyramid(world, 5, 0.0);
         addPyramid(world, 3, 7.0);
@@ -268,8 +285,10 @@ TEST_CASE("rigid sleep: deterministic, the same state hash run twice", "[sleep][
 }
 
 TEST_CASE("rigid sleep: removing what a sleeping stack rests on wakes it, and it falls", "[sleep][rigid]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    INFO("method " << methodName(method));
     const int height = GENERATE(2, 4);
-    World world(solverDef());
+    World world(sleepDef(method));
     addFloor(world);
     std::vector<BodyId> stack;
     for (int k = 0; k < height; ++k) stack.push_back(world.addBody(box({0.0, 0.5 + k}, {0.5, 0.5})));

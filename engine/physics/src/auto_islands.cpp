@@ -176,13 +176,14 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         const BoundingBox clipped{{std::max(region.min.x, bounds.min.x), std::max(region.min.y, bounds.min.y)},
                                   {std::min(region.max.x, bounds.max.x), std::min(region.max.y, bounds.max.y)}};
         if (clipped.min.x <= clipped.max.x && clipped.min.y <= clipped.max.y) region = clipped;
-        // Asleep circles only wait to be found: two of them were joined when they fell asleep
+        // Asleep circles and rigid bodies only wait to be found: two of them were joined when they fell asleep
         // together (below), and two sleeping islands apart have nothing to tell each other. A
         // sleeping pile then costs what its awake visitors look at.
         looks_.resize(order_.size());
         for (std::size_t k = 0; k < order_.size(); ++k) {
             const int node = order_[k];
-            looks_[k] = node >= circleCount || !ctx.circles[static_cast<std::size_t>(node)].sleep.asleep;
+            looks_[k] = node >= circleCount ? !ctx.bodies[static_cast<std::size_t>(node - circleCount)].sleep.asleep
+                                            : !ctx.circles[static_cast<std::size_t>(node)].sleep.asleep;
         }
         grid_.build(looseBoxes_, {}, region, cellSize, 4 * static_cast<int>(order_.size()) + 64);
         grid_.findPairs(looseBoxes_, {}, looks_, pairs_);
@@ -197,15 +198,28 @@ void AutoIslands::build(const StepContext& ctx, double dt) {
         join(parent_, a, b);
         join(looseParent_, a, b);
     };
-    // Roped circles, and circles the solver put to sleep together (they wake together).
+    // Roped circles, and circles and rigid bodies the solver put to sleep together (they wake together).
     const auto dynamicCircle = [&](int i) {
         return i >= 0 && i < circleCount && ctx.circles[static_cast<std::size_t>(i)].motion == Motion::dynamic;
     };
     for (const Rope& rope : ropes)
         if (!rope.cut && dynamicCircle(rope.circle) && dynamicCircle(rope.other)) joinBoth(rope.circle, rope.other);
+    // An island is named by a circle's index, or by -1 - a rigid body's when it has no circle
+    // (solver_sleep.hpp): the whole sleeping island, joints and all, wakes and goes to one method.
+    const auto sleepNode = [&](int island) {
+        if (island >= 0) return dynamicCircle(island) ? island : -1;
+        const int body = -1 - island;
+        return body < static_cast<int>(ctx.bodies.size()) ? circleCount + body : -1;
+    };
     for (int i = 0; i < circleCount; ++i) {
         const Circle& c = ctx.circles[static_cast<std::size_t>(i)];
-        if (c.motion == Motion::dynamic && c.sleep.asleep && dynamicCircle(c.sleep.island)) joinBoth(i, c.sleep.island);
+        if (c.motion != Motion::dynamic || !c.sleep.asleep) continue;
+        if (const int n = sleepNode(c.sleep.island); n >= 0) joinBoth(i, n);
+    }
+    for (std::size_t b = 0; b < ctx.bodies.size(); ++b) {
+        const RigidBody& body = ctx.bodies[b];
+        if (!body.sleep.asleep) continue;
+        if (const int n = sleepNode(body.sleep.island); n >= 0) joinBoth(circleCount + static_cast<int>(b), n);
     }
     // Joints are the solver's: a jointed body needs it, and a joint's two ends share an island (a
     // gear's and a belt's wheels are tied through their revolutes' ends). Only a spring to a fixed

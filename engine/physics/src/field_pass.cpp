@@ -84,7 +84,9 @@ void applyFields(std::span<Circle> circles, const Fields& fields, std::span<cons
         if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
         const double width = 2.0 * c.radius;
         Vec2 kick;
-        if (airDrag.linear > 0.0)
+        // Linear drag's split carries gravity's share (see linearDragKick): a sleeper, held against
+        // gravity and at rest, gets none, or the kick would wake it every step.
+        if (airDrag.linear > 0.0 && !c.sleep.asleep)
             kick += linearDragKick(c.velocity, gravity, airDrag.linearRate(c.radius, c.inverseMass), dt);
         if (airDrag.quadratic > 0.0)
             kick += quadraticDragKick(c.velocity, airDrag.quadraticRate(c.radius, c.inverseMass), dt);
@@ -101,7 +103,7 @@ void applyFields(std::span<Circle> circles, const Fields& fields, std::span<cons
 
 void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt) {
     for (Circle& c : circles) {
-        if (c.motion != Motion::dynamic || c.inverseMass == 0.0) continue;
+        if (c.motion != Motion::dynamic || c.inverseMass == 0.0 || c.sleep.asleep) continue;
         const double k = airDrag.linearRate(c.radius, c.inverseMass);
         const Vec2 terminal = gravity / k;
         // v(dt) = v_t + (w - v_t - g dt / 2) e^{-k dt} / phi: undoes the share the move carried (see linearDragKick).

@@ -103,6 +103,10 @@ public:
 
     bool integratesRotation() const override { return usedSolver_; }
     bool keepsSleep() const override { return true; }
+    // The solver's islands sleep whole (rigid bodies, pivots and joints with them), and an asleep
+    // island stays one auto island (AutoIslands::build), so it is never split between the methods;
+    // exact wakes whatever it is given before it moves it.
+    bool keepsRigidSleep() const override { return true; }
     void remapSlots(const SlotRemap& remap) override {
         exact_->remapSlots(remap);
         if (solver_) solver_->remapSlots(remap);
@@ -135,7 +139,7 @@ private:
         const auto shapes = static_cast<std::int64_t>(ctx.circles.size() + ctx.segments.size() + ctx.bodies.size());
         const std::int64_t affordable = affordableEvents(dynamic, shapes);
         if (affordable < kFewestEvents) return false;
-        wakeAll(ctx.circles); // exact moves every body: the solver's sleepers wake first
+        wakeAll(ctx.circles, ctx.bodies); // exact moves every body: the solver's sleepers wake first
         circlesBefore_.assign(ctx.circles.begin(), ctx.circles.end());
         segmentsBefore_.assign(ctx.segments.begin(), ctx.segments.end());
         bodiesBefore_.assign(ctx.bodies.begin(), ctx.bodies.end());
@@ -277,6 +281,8 @@ private:
             // Exact moves every body it is given: the solver's sleepers among them wake first.
             for (std::size_t i = 0; i < ctx.circles.size(); ++i)
                 if (chosen_[i] && ctx.circles[i].sleep.asleep) ctx.circles[i].sleep = SleepState{};
+            for (std::size_t b = 0; b < ctx.bodies.size(); ++b)
+                if (chosen_[ctx.circles.size() + b] && ctx.bodies[b].sleep.asleep) ctx.bodies[b].sleep = SleepState{};
             const int blamed = tryExact(ctx, dt, whole);
             if (blamed < 0) {
                 ctx.stats.exactBodySteps += dynamic;

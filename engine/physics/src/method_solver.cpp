@@ -99,8 +99,8 @@ private:
     void flyFreeCirclesExactly(const StepContext& ctx, double dt);
     std::span<const BoundingBox> bulletPaths(double dt);
     RigidSleepInput rigidSleep(const StepContext& ctx) const {
-        if (!hasRigid_) return {};
-        return {ctx.bodies, rigid_.contacts(), ctx.joints, ctx.pivots, rigid_.reached()};
+        if (!hasRigid_) return {{}, {}, {}, {}, {}, ctx.ropes};
+        return {ctx.bodies, rigid_.contacts(), ctx.joints, ctx.pivots, rigid_.reached(), ctx.ropes};
     }
 
     int circleCount_ = 0;

@@ -85,8 +85,15 @@ void recordRopeStarts(std::span<const Circle> circles, std::span<const Rope> rop
     for (std::size_t k = 0; k < ropes.size(); ++k) {
         const Rope& rope = ropes[k];
         if (rope.cut) continue;
-        const Vec2 offset = circles[static_cast<std::size_t>(rope.circle)].position - farEnd(circles, rope);
-        starts[k] = {offset, offset.length() >= rope.length * (1.0 - kTautTolerance)};
+        const Circle& a = circles[static_cast<std::size_t>(rope.circle)];
+        const Vec2 offset = a.position - farEnd(circles, rope);
+        const double taut = rope.length * (1.0 - kTautTolerance);
+        // An asleep rope (its ends asleep or immovable) is compared squared: no square root for a
+        // rope that sleeps (the same answer but within rounding at the tolerance's edge).
+        const bool asleep = a.sleep.asleep &&
+                            (rope.other < 0 || circles[static_cast<std::size_t>(rope.other)].sleep.asleep ||
+                             inverseMassOf(circles[static_cast<std::size_t>(rope.other)]) == 0.0);
+        starts[k] = {offset, asleep ? offset.lengthSquared() >= taut * taut : offset.length() >= taut};
     }
 }
 
@@ -98,13 +105,19 @@ void enforceRopes(std::span<Circle> circles, std::span<const Rope> ropes, std::s
         Circle& a = circles[static_cast<std::size_t>(rope.circle)];
         Circle* b = rope.other >= 0 ? &circles[static_cast<std::size_t>(rope.other)] : nullptr;
         const double wa = inverseMassOf(a), wb = b ? inverseMassOf(*b) : 0.0;
+        // Asleep (solver_sleep.hpp: zero velocity, put to sleep within this step's method, after it
+        // moved them g dt^2 past the rope): the ends are only put back L apart where they lie, once,
+        // the step it fell asleep; no square root otherwise.
+        const bool asleep = a.sleep.asleep && (!b || b->sleep.asleep || wb == 0.0);
+        if (asleep && (a.position - (b ? b->position : rope.anchor)).lengthSquared() <= rope.length * rope.length)
+            continue;
         const double w = wa + wb;
         if (!(w > 0.0)) continue; // both ends immovable: nothing the rope could do
         const double shareA = wa / w, shareB = wb / w;
         const Vec2 vb = b ? b->velocity : Vec2{};
         Vec2 relative = a.velocity - vb;
         const RopeStart& start = starts[k];
-        const bool freeSwing = start.taut && !hitSomething(impacts, rope.circle) &&
+        const bool freeSwing = start.taut && !asleep && !hitSomething(impacts, rope.circle) &&
                                (!b || !hitSomething(impacts, rope.other));
         // Where the ends would be apart by now: the method's word, or semi-implicit Euler's for a free swing.
         const Vec2 offset = freeSwing ? start.offset + relative * dt : a.position - (b ? b->position : rope.anchor);

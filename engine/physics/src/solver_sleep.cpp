@@ -13,9 +13,6 @@ namespace {
 /// tilted 0.01 degree is pushed 1.7e-3 m/s^2 along it and keeps sliding.
 constexpr double kUnheldAcceleration = 1e-5;
 
-/// Per circle in update: not an awake dynamic circle, awake but not slow for long enough, or ready to sleep.
-enum : std::uint8_t { other, awake, ready };
-
 void wake(Circle& c) { c.sleep = SleepState{}; }
 
 bool movingKinematic(const Circle& c) { return c.motion == Motion::kinematic && c.velocity != Vec2{}; }
@@ -111,6 +108,11 @@ bool SleepIslands::wakeReached(std::span<Circle> circles, std::span<const Segmen
                 reachBody(node - circleCount);
             }
         });
+    }
+    // A rope from an awake or moving circle pulls its asleep end, as a joint does.
+    if (!rigid.ropes.empty()) {
+        ropeReached(circles, rigid.ropes, ropeReached_);
+        for (const int i : ropeReached_) reach(i);
     }
     // Pushed from outside: a sleeper's velocity and spin are exactly zero until something sets them.
     for (const int i : asleep_) {
@@ -238,6 +240,7 @@ void SleepIslands::demoteUnheld(std::span<const Circle> circles, std::span<const
             if (b >= 0) offer(b, c.normal, c.friction);
         }
     }
+    if (!rigid.ropes.empty()) offerRopeRays(circles, rigid.ropes, up);
     // A circle on one contact rolls: friction there turns it rather than holding it (the contact force
     // must pass through the centre for the torque to vanish), so friction cones count from two
     // contacts on, or for a body that cannot turn. A joint or pivot can pull any way: what it ends on is held.
@@ -337,11 +340,15 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
     enum : std::uint8_t { moving, slow, spinning };
     slowness_.assign(static_cast<std::size_t>(circleCount), moving);
     bool anySpinning = false;
+    // A roped circle is as slow as the rope pass will leave it (solver_sleep_ropes.cpp).
+    const std::span<const Vec2> velocities = rigid.ropes.empty() ? std::span<const Vec2>{}
+                                                                 : ropeVelocities(circles, rigid.ropes);
     for (int i = 0; i < circleCount; ++i) {
         const Circle& c = circles[static_cast<std::size_t>(i)];
         if (c.motion != Motion::dynamic || c.inverseMass <= 0.0 || c.sleep.asleep) continue;
         const double spin = c.angularVelocity * c.radius;
-        if (!(c.velocity.lengthSquared() < limit2)) continue;
+        const Vec2 v = velocities.empty() ? c.velocity : velocities[static_cast<std::size_t>(i)];
+        if (!(v.lengthSquared() < limit2)) continue;
         const bool spins = !(spin * spin < limit2);
         slowness_[static_cast<std::size_t>(i)] = spins ? spinning : slow;
         anySpinning = anySpinning || spins;
@@ -361,6 +368,12 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
             grip(c.a);
             if (c.b < firstSegment) grip(c.b);
         }
+        // A spinning circle a joint ends on is a wheel on its axle: its spin is motion the joint can
+        // pass on (a gear, a belt, a weld), and nothing but friction stops it, so it counts.
+        for (const Joint& j : rigid.joints)
+            forEachEnd(rigid.joints, j, circleCount, [&](int node) {
+                if (node < circleCount) grip(node);
+            });
         // A spinning circle pressed with friction against a rigid body turns it, or is turned by it.
         for (const RigidContact& c : rigid.contacts) {
             if (c.friction <= 0.0) continue;
@@ -410,6 +423,7 @@ void SleepIslands::update(std::span<Circle> circles, std::span<const Segment> se
         }
     }
     if (!rigid.bodies.empty() || !rigid.joints.empty()) joinRigid(circles, segments, rigid);
+    if (!rigid.ropes.empty()) joinRopes(circles, rigid.ropes);
     for (int i = 0; i < nodeCount; ++i)
         if (blocked_[static_cast<std::size_t>(i)]) blocked_[static_cast<std::size_t>(find(i))] = 1;
     // An island is named by its lowest node (join keeps it the root): a circle's index when it has one.

@@ -18,7 +18,14 @@
 //   - an awake dynamic circle near enough to be a candidate pair (its path's box for a bullet);
 //   - an awake rigid body, or a moving kinematic one, whose contacts reach it (RigidStage::reached);
 //   - a moving kinematic body (path-driven circle or segment) whose swept box reaches it;
-//   - a joint whose other end is awake (a joint added to it between steps).
+//   - a joint whose other end is awake (a joint added to it between steps);
+//   - a rope whose other end is awake or a moving kinematic circle.
+// Ropes (solver_sleep_ropes.cpp) are part of the islands though the world enforces them after the
+// method: a rope's two circles share an island, a taut rope holds its circle towards its other end
+// (one ray, as a frictionless contact: a pendulum hanging straight down is held, one held aside is
+// not), and a circle's speed is judged as the rope will leave it (less the stretching speed the
+// rope takes out after the step), so a weight hanging still is slow although the solver has just
+// given it g dt.
 // A waking island starts slow from zero again. Sleeping changes nothing a settled scene shows: the
 // bodies it stops were slower than a centimetre a second and held where they were; only a drift
 // that nothing pushes (under 1 cm/s, on a level floor or in free flight) is stopped with them.
@@ -28,6 +35,7 @@
 #include "rube/physics/joint.hpp"
 #include "rube/physics/pivot.hpp"
 #include "rube/physics/rigid_body.hpp"
+#include "rube/physics/rope.hpp"
 #include "solver_soft_step.hpp"
 
 #include <cstdint>
@@ -46,6 +54,7 @@ struct RigidSleepInput {
     std::span<const Joint> joints;
     std::span<const Pivot> pivots;
     std::span<const int> reached; ///< sleepers an awake or moving body's contacts reach: circle c, or -1 - body
+    std::span<const Rope> ropes;  ///< the world's ropes (solver_sleep_ropes.cpp), in any world
 };
 
 /// The circles a step looks at to wake and put islands to sleep.
@@ -71,6 +80,8 @@ public:
                 Vec2 gravity, const RigidSleepInput& rigid);
 
 private:
+    /// Per node in update: not an awake dynamic body, awake but not slow for long enough, or ready to sleep.
+    enum : std::uint8_t { other, awake, ready };
     /// The directions a circle's contacts can push it in, kept as the nearest to `up` on either side
     /// (in 2-D two rays span every cone the others do: Caratheodory for cones).
     struct HoldRays {
@@ -86,6 +97,12 @@ private:
     void countSlowBodies(const RigidSleepInput& rigid, int circleCount, double dt, double sleepSpeed,
                          double timeToSleep, int& readyCount);
     void joinRigid(std::span<const Circle> circles, std::span<const Segment> segments, const RigidSleepInput& rigid);
+    // Ropes (solver_sleep_ropes.cpp): the velocities the rope pass will leave, the rays taut ropes
+    // hold along, the islands they join, and the sleepers a rope from an awake end reaches.
+    std::span<const Vec2> ropeVelocities(std::span<const Circle> circles, std::span<const Rope> ropes);
+    void offerRopeRays(std::span<const Circle> circles, std::span<const Rope> ropes, Vec2 up);
+    void joinRopes(std::span<const Circle> circles, std::span<const Rope> ropes);
+    static void ropeReached(std::span<const Circle> circles, std::span<const Rope> ropes, std::vector<int>& reached);
 
     // Nodes: the circles, then the rigid bodies (circle count + body index).
     std::vector<int> parent_;            // union-find over the nodes ready to sleep
@@ -100,6 +117,8 @@ private:
     std::vector<HoldRays> normalRays_,
         coneRays_;             // scratch: per node, what its contacts' normals, and friction cones, can push
     std::vector<int> holding_; // scratch: per node, its contact points that can push
+    std::vector<int> ropeReached_;   // scratch: asleep circles a rope from an awake or moving end reaches
+    std::vector<Vec2> ropeVelocity_; // scratch: per circle, its velocity once the ropes have taken their stretch out
 };
 
 } // namespace rube

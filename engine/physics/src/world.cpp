@@ -164,6 +164,7 @@ RopeId World::addRope(const RopeDef& d) {
     perEntry(tables_->ropeOn, entry) = 1;
     const int other = d.other.isNull() ? -1 : slot(d.other);
     ropes_.push_back(Rope{slot(d.circle), other, d.circle, d.other, d.anchor, d.length, false});
+    wakeEnds(ropes_.back()); // a rope shorter than its circles are apart pulls them at once
     // A rope to a disabled circle waits with it.
     if (!isEnabled(d.circle) || (!d.other.isNull() && !isEnabled(d.other))) syncJoints();
     return handleOf<RopeId>(tables_->ropes, entry);
@@ -223,13 +224,11 @@ void World::step() {
     StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
     context.joints = joints_;
     context.workers = workers_.get();
-    // Sleep is the solver's (auto's too): ropes are not part of its islands, so their worlds keep every
-    // body awake, as do methods that move every body anyway. Rigid bodies, pivots and joints join the
-    // solver's islands (keepsRigidSleep); auto gives the solver only some islands, so with any of them
-    // it keeps everything awake.
-    const bool rigidWorld = !bodies_.empty() || !joints_.empty();
-    context.sleep = def_.sleepSpeed > 0.0 && ropes_.empty() && method_->keepsSleep() &&
-                    (!rigidWorld || method_->keepsRigidSleep());
+    // Sleep is the solver's (auto's solver islands too); methods that move every body anyway keep
+    // every body awake. Rigid bodies, pivots, joints and ropes join the solver's islands
+    // (keepsRigidSleep: the solver and auto).
+    const bool rigidWorld = !bodies_.empty() || !joints_.empty() || !ropes_.empty();
+    context.sleep = def_.sleepSpeed > 0.0 && method_->keepsSleep() && (!rigidWorld || method_->keepsRigidSleep());
     // Only the solver puts bodies to sleep, so a world that never let it pays no pass to wake them.
     if (!context.sleep && mayHaveSleepers_) wakeAll(circles_, bodies_);
     mayHaveSleepers_ = context.sleep;

@@ -243,6 +243,7 @@ void World::remove(BodyId id) {
 
 void World::remove(RopeId id) {
     HandleTable::Entry& entry = tables_->ropes.at(id.index, id.generation, "rope");
+    wakeEnds(rope(id));
     if (entry.enabled) {
         const int slot = entry.slot;
         tables_->ropes.leave(id.index);
@@ -320,6 +321,7 @@ void World::setEnabled(BodyId id, bool enabled) {
 
 void World::setEnabled(RopeId id, bool enabled) {
     tables_->ropes.at(id.index, id.generation, "rope");
+    wakeEnds(rope(id));
     tables_->ropeOn[static_cast<std::size_t>(id.index)] = enabled ? 1 : 0;
     syncJoints();
 }
@@ -333,9 +335,10 @@ void World::setEnabled(PivotId id, bool enabled) {
 
 void World::cutRope(RopeId id) {
     HandleTable::Entry& entry = tables_->ropes.at(id.index, id.generation, "rope");
-    (entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)]
-                   : tables_->parkedRopes[static_cast<std::size_t>(id.index)])
-        .cut = true;
+    Rope& r = entry.enabled ? ropes_[static_cast<std::size_t>(entry.slot)]
+                            : tables_->parkedRopes[static_cast<std::size_t>(id.index)];
+    if (!r.cut) wakeEnds(r); // what it held falls
+    r.cut = true;
 }
 
 // ---- lookups ----

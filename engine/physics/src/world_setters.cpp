@@ -33,6 +33,12 @@ void World::wakeBody(const RigidBody& b) {
     if (b.sleep.asleep) wakeIsland(b.sleep.island);
 }
 
+void World::wakeEnds(const Rope& rope) {
+    // A rope added, cut, enabled or removed changes what holds its circles (solver_sleep_ropes.cpp).
+    if (isValid(rope.circleId)) wakeCircle(circleState(rope.circleId));
+    if (!rope.otherId.isNull() && isValid(rope.otherId)) wakeCircle(circleState(rope.otherId));
+}
+
 void World::setPosition(CircleId id, Vec2 position) {
     Circle& c = circleState(id);
     wakeCircle(c);

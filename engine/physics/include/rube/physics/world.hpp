@@ -61,8 +61,8 @@ struct WorldDef {
     /// solver and auto: circles that, with everything they touch, stay under `sleepSpeed` (m/s, and
     /// their surfaces' spin) for `timeToSleep` seconds rest until something reaches them; 0 never.
     /// The solver puts rigid bodies (omega times their bounding radius counted too), pivots and
-    /// joints in the same islands; auto keeps a world with rigid bodies or joints awake, and worlds
-    /// with ropes keep every body awake.
+    /// joints in the same islands, and ropes (a rope's circles share an island; a taut rope holds
+    /// its circle towards its other end); auto lets the islands it gives the solver sleep so.
     double sleepSpeed = 0.01;
     double timeToSleep = 0.5; ///< seconds, see sleepSpeed
     /// solver and auto: the most a dynamic rigid body (box, capsule; not a circle, which the solver
@@ -305,6 +305,7 @@ private:
     void wakeBody(const RigidBody& b);
     void wakeIsland(int island);      ///< every asleep circle and rigid body of `island` (SleepState::island)
     void wakeEnds(const JointDef& d); ///< the islands of a joint's ends (a gear's: its joints' ends)
+    void wakeEnds(const Rope& rope);  ///< the islands of a rope's circles
     void wakeNear(const Segment& s);
     void remapSlots(const SlotRemap& remap);
     void leaveCircle(int entry);

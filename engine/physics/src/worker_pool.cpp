@@ -45,7 +45,7 @@ WorkerPool::WorkerPool(int workers) : workers_(workers) {
 
 WorkerPool::~WorkerPool() {
     if (threads_.empty()) return;
-    stop_ = true;
+    stop_.store(true, std::memory_order_relaxed); // published by the generation's seq_cst bump
     generation_.fetch_add(1, std::memory_order_seq_cst);
     generation_.notify_all();
     for (std::thread& t : threads_) t.join();
@@ -90,7 +90,7 @@ void WorkerPool::loop() {
     std::uint64_t seen = 0;
     for (;;) {
         seen = awaitChange(generation_, seen);
-        if (stop_) return;
+        if (stop_.load(std::memory_order_acquire)) return;
         active_.fetch_add(1, std::memory_order_seq_cst);
         if (closed_.load(std::memory_order_seq_cst) < seen) work();
         if (active_.fetch_sub(1, std::memory_order_seq_cst) == 1) active_.notify_all();

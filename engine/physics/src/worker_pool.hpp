@@ -64,7 +64,7 @@ private:
     alignas(64) std::atomic<std::uint64_t> generation_{0}; // bumped to publish a run
     std::atomic<std::uint64_t> closed_{0};                 // the last run whose chunks are all done
     std::atomic<int> active_{0};                           // workers inside a run
-    bool stop_ = false;
+    std::atomic<bool> stop_{false}; // read by a worker that may not have joined the last run
 };
 
 /// Calls part(begin, end) over chunks of [0, n) on the pool's threads when there are at least two

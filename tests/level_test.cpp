@@ -566,7 +566,8 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
     // the heavy ball falls on exact's parabola until it nears the plank (the solver's semi-implicit fall
     // was 2.6 mm lower after 19 steps), so it strikes the plank at another instant. 303 since the rigid
     // contacts are solved in colours (issue 26: another Gauss-Seidel order; the dominoes fall at the same steps).
-    CHECK(*solved.goal == 303);
+    // 295 since auto lets its solver islands of boxes sleep (issue 26): the settled dominoes rest until struck.
+    CHECK(*solved.goal == 295);
     // Turned over: left end down on the floor, 1.5 sin a + 0.05 cos a = 0.6, a = 0.378 rad.
     CHECK(solved.plankAngle == Approx(0.378).margin(0.005));
     CHECK(solved.heavyLeftmost > -0.3); // the gate stopped the heavy ball: only the striker went on

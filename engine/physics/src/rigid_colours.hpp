@@ -57,9 +57,9 @@ void sweepColours(WorkerPool* pool, const RigidColours& colours, Sweep sweep) {
     for (int colour = 0; colour <= kRigidColours; ++colour) {
         sizes[colour] = at(colour + 1) - at(colour);
         chunks[colour] = colour < kRigidColours ? kContactChunk : std::max<std::size_t>(1, sizes[colour]);
-        shared = shared || (colour < kRigidColours && sizes[colour] >= 2 * kContactChunk);
+        shared = shared || (colour < kRigidColours && worthSharing(pool, sizes[colour], kContactChunk));
     }
-    if (pool == nullptr || pool->workers() == 1 || !shared) {
+    if (!shared) {
         for (int colour = 0; colour <= kRigidColours; ++colour)
             if (sizes[colour] > 0) sweep(at(colour), at(colour + 1));
         return;

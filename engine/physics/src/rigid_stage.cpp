@@ -143,7 +143,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     };
     const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
                          const Material& mb) {
-        if (m.count == 0 || tied(a, b)) return;
+        if (m.count == 0) return; // tied pairs were given no manifold (below)
         contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                              ma.bounciness * mb.bounciness));
         contacts_.back().bodyA = solverBodyOf(a);
@@ -196,10 +196,12 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const auto i = static_cast<std::size_t>(pairs_[k].body), other = static_cast<std::size_t>(pairs_[k].other);
             Manifold& m = manifolds_[k];
             m.count = 0;
+            const BodySide side{static_cast<int>(i), true};
             if (other < n) {
-                if (isDynamic(i) || isDynamic(other))
+                if ((isDynamic(i) || isDynamic(other)) && !tied(side, {static_cast<int>(other), true}))
                     m = collideRoundedPolygons(shapes_[i], shapes_[other], reach_[i] + reach_[other]);
-            } else if (isDynamic(i) || circleDynamic(other - n)) {
+            } else if ((isDynamic(i) || circleDynamic(other - n)) &&
+                       !tied(side, {static_cast<int>(other - n), false})) {
                 m = collideRoundedPolygons(shapes_[i], makeRoundedPolygon(ctx.circles[other - n]),
                                            reach_[i] + circleReach_[other - n]);
             }
@@ -251,8 +253,9 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const Segment& seg = ctx.segments[s];
             const double reach = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
             const RoundedPolygon shape = makeRoundedPolygon(seg);
-            if (!boxes[i].overlaps(boundsOf(shape, reach))) continue;
-            add(side, {circleCount_ + static_cast<int>(s), false}, bi.position, seg.a,
+            const BodySide segmentSide{circleCount_ + static_cast<int>(s), false};
+            if (!boxes[i].overlaps(boundsOf(shape, reach)) || tied(side, segmentSide)) continue;
+            add(side, segmentSide, bi.position, seg.a,
                 collideRoundedPolygons(shapes_[i], shape, reach_[i] + reach), bi.material, seg.material);
         }
     }
@@ -381,7 +384,7 @@ void RigidStage::integratePositions(double h) {
     const auto arms = [&](std::size_t first, std::size_t last) {
         refreshArms(std::span(contacts_).subspan(first, last - first), states_);
     };
-    if (pool_ != nullptr && pool_->workers() > 1 && rigidCount_ >= 2 * kBodyChunk) {
+    if (worthSharing(pool_, rigidCount_, kBodyChunk)) {
         // Two phases: the arms read both bodies' turns.
         const std::size_t sizes[2] = {rigidCount_, contacts_.size()}, chunks[2] = {kBodyChunk, kContactLoopChunk};
         auto work = [&](int phase, std::size_t first, std::size_t last) {

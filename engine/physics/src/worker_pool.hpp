@@ -67,12 +67,17 @@ private:
     std::atomic<bool> stop_{false}; // read by a worker that may not have joined the last run
 };
 
-/// Calls part(begin, end) over chunks of [0, n) on the pool's threads when there are at least two
-/// chunks of `chunk` items (and more than one worker), else part(0, n) here. For loops whose items
-/// write only their own slots, so any split gives the same bits.
+/// Whether n items in chunks of `chunk` are worth handing to the pool: more than one worker and at
+/// least two chunks (a hand-over costs about a microsecond).
+inline bool worthSharing(const WorkerPool* pool, std::size_t n, std::size_t chunk) {
+    return pool != nullptr && pool->workers() > 1 && n >= 2 * chunk;
+}
+
+/// Calls part(begin, end) over chunks of [0, n) on the pool's threads when worthSharing, else
+/// part(0, n) here. For loops whose items write only their own slots, so any split gives the same bits.
 template <class Part>
 void forShares(WorkerPool* pool, std::size_t n, std::size_t chunk, Part part) {
-    if (pool == nullptr || pool->workers() == 1 || n < 2 * chunk) {
+    if (!worthSharing(pool, n, chunk)) {
         part(std::size_t{0}, n);
         return;
     }

@@ -1,9 +1,10 @@
-// The rigid contacts' colours and their two-lane sweep (issue 26): a colour never holds two contacts
-// of one movable body, the colouring is the greedy one in list order, and solving a colour two
-// contacts at a time (SSE2, or the plain pair of doubles without it) gives the same bits as solving
-// the contacts one by one, over random contacts, masses, arms, gaps and impulses.
+// The rigid contacts' colours, their blocks and the two-lane sweep (issue 26): a colour never holds
+// two contacts of one movable body, the colouring is the greedy one in list order, and the blocks'
+// warm start, approach measure, arms and sweep (SSE2, or the plain pair of doubles without it) give
+// the same bits as the one-contact-at-a-time forms over the list, over random contacts, masses,
+// arms, anchors, turns, gaps and impulses.
 #include "rigid_colours.hpp"
-#include "rigid_contact_lanes.hpp"
+#include "rigid_contact_blocks.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -34,6 +35,8 @@ Scene randomScene(std::mt19937_64& rng, int n, int m) {
         b.velocity = {u(rng) * 3.0, u(rng) * 3.0};
         b.omega = u(rng) * 2.0;
         b.displacement = {u(rng) * 0.01, u(rng) * 0.01};
+        b.turn = u(rng) * 0.1;
+        b.turnRotation = {std::cos(b.turn), std::sin(b.turn)};
         if (u(rng) > 0.8) b.velocity = {-0.0, 0.0};
         if (u(rng) > -0.6) {
             b.inverseMass = 0.5 + u(rng) * 0.4;
@@ -56,6 +59,8 @@ Scene randomScene(std::mt19937_64& rng, int n, int m) {
         c.count = u(rng) > -0.3 ? 2 : 1;
         for (int j = 0; j < c.count; ++j) {
             RigidContactPoint& p = c.points[j];
+            p.anchorA = {u(rng) * 0.5, u(rng) * 0.5};
+            p.anchorB = {u(rng) * 0.5, u(rng) * 0.5};
             p.armA = {u(rng) * 0.5, u(rng) * 0.5};
             p.armB = {u(rng) * 0.5, u(rng) * 0.5};
             p.baseSeparation = u(rng) * 0.02; // both speculative gaps and overlaps
@@ -64,6 +69,7 @@ Scene randomScene(std::mt19937_64& rng, int n, int m) {
             p.normalImpulse = u(rng) > 0.0 ? 0.2 + 0.1 * u(rng) : 0.0;
             p.tangentImpulse = 0.05 * u(rng);
             p.deliveredNormal = 0.3 * u(rng);
+            p.deliveredTangent = u(rng) > 0.0 ? 0.1 * u(rng) : 0.0;
             p.maxNormalImpulse = u(rng) > 0.0 ? 0.3 : 0.0;
             // The edges where max, min and clamp differ by operand order: signed zeros and NaN.
             const double edge = u(rng);
@@ -110,6 +116,12 @@ void requireSameBits(const Scene& x, const Scene& y) {
             REQUIRE(sameBits(p.deliveredNormal, q.deliveredNormal));
             REQUIRE(sameBits(p.deliveredTangent, q.deliveredTangent));
             REQUIRE(sameBits(p.maxNormalImpulse, q.maxNormalImpulse));
+            REQUIRE(sameBits(p.armA.x, q.armA.x));
+            REQUIRE(sameBits(p.armA.y, q.armA.y));
+            REQUIRE(sameBits(p.armB.x, q.armB.x));
+            REQUIRE(sameBits(p.armB.y, q.armB.y));
+            REQUIRE(sameBits(p.approachSpeed, q.approachSpeed));
+            REQUIRE(p.touchSubstep == q.touchSubstep);
         }
 }
 
@@ -118,25 +130,6 @@ RigidContactSoftness softness() {
     s.movable = makeSoftness(60.0, 10.0, 1.0 / 480.0);
     s.fixed = makeSoftness(120.0, 10.0, 1.0 / 480.0);
     return s;
-}
-
-/// The pairs of each colour with the given lane type, the overflow one by one: solveColouredContacts'
-/// loop, for the lane type the build does not pick itself.
-template <class W>
-void solveInPairs(Scene& s, const RigidColours& colours, bool useBias) {
-    const double h = 1.0 / 480.0;
-    RigidContact standIn;
-    for (int colour = 0; colour < kRigidColours; ++colour) {
-        int k = colours.start(colour);
-        for (; k + 1 < colours.start(colour + 1); k += 2)
-            solveContactPair<W>(s.contacts[static_cast<std::size_t>(k)], s.contacts[static_cast<std::size_t>(k + 1)],
-                                s.bodies, softness(), 1.0 / h, useBias, true);
-        if (k < colours.start(colour + 1))
-            solveContactPair<W>(s.contacts[static_cast<std::size_t>(k)], standIn, s.bodies, softness(), 1.0 / h,
-                                useBias, false);
-    }
-    const auto first = static_cast<std::size_t>(colours.start(kRigidColours));
-    solveRigidContacts(std::span(s.contacts).subspan(first), s.bodies, softness(), h, useBias);
 }
 
 } // namespace
@@ -202,25 +195,68 @@ TEST_CASE("contacts past the last colour go to the overflow, in list order", "[r
     }
 }
 
-TEST_CASE("a colour solved two contacts at a time gives the bits of the contacts solved one by one",
+TEST_CASE("a colour solved four contacts at a time in blocks gives the bits of the contacts solved one by one",
           "[rigid][colours][determinism]") {
+    if (!blocksRunAvx()) WARN("no AVX here: the best code is the portable code");
     std::mt19937_64 rng(2026);
     for (int round = 0; round < 60; ++round) {
         const int n = 2 + round * 4, m = 1 + round * 9;
         Scene start = randomScene(rng, n, m);
         RigidColours colours;
         colours.build(start.contacts, start.bodies);
-        for (const bool useBias : {true, false}) {
-            INFO("round " << round << (useBias ? " biased" : " relax"));
-            // Three sweeps each, so warm impulses and moved velocities feed the next.
-            Scene one = start, wide = start, plain = start;
-            for (int sweep = 0; sweep < 3; ++sweep) {
-                solveRigidContacts(one.contacts, one.bodies, softness(), 1.0 / 480.0, useBias);
-                solveColouredContacts(wide.contacts, colours, wide.bodies, softness(), 1.0 / 480.0, useBias);
-                solveInPairs<ScalarPair>(plain, colours, useBias);
+        for (const LaneCode code : {LaneCode::best, LaneCode::portable})
+            for (const bool useBias : {true, false}) {
+                INFO("round " << round << (useBias ? " biased" : " relax")
+                              << (code == LaneCode::best ? " best" : " portable"));
+                // Three sweeps each, so warm impulses and moved velocities feed the next.
+                Scene one = start, wide = start;
+                RigidBlocks blocks;
+                blocks.pack(wide.contacts, colours);
+                refreshArms(one.contacts, one.bodies);
+                refreshBlockArms(blocks.all(), wide.bodies, code);
+                for (int sweep = 0; sweep < 3; ++sweep) {
+                    solveRigidContacts(one.contacts, one.bodies, softness(), 1.0 / 480.0, useBias);
+                    solveBlocks(blocks.all(), wide.bodies, softness(), 1.0 / 480.0, useBias, code);
+                }
+                blocks.unpack(wide.contacts);
+                requireSameBits(one, wide);
             }
-            requireSameBits(one, wide);
-            requireSameBits(one, plain);
+    }
+}
+
+TEST_CASE("the blocks' warm start, approach measure and arms give the bits of the contacts' own",
+          "[rigid][colours][determinism]") {
+    std::mt19937_64 rng(1226);
+    for (int round = 0; round < 40; ++round) {
+        const int n = 2 + round * 4, m = 1 + round * 9;
+        Scene start = randomScene(rng, n, m);
+        RigidColours colours;
+        colours.build(start.contacts, start.bodies);
+        // A body spinning past the warm start's limit (0.3 rad in the substep) starts its contacts cold.
+        const double h = 1.0 / 480.0, maxTurn = 0.3;
+        if (n > 3) start.bodies[1].omega = 200.0;
+        for (const LaneCode code : {LaneCode::best, LaneCode::portable}) {
+            Scene from = start;
+            for (int substep = 0; substep < 3; ++substep) {
+                INFO("round " << round << " substep " << substep << (code == LaneCode::best ? " best" : " portable"));
+                Scene one = from, wide = from;
+                RigidBlocks blocks;
+                blocks.pack(wide.contacts, colours);
+                // In the stage's order: arms, approach, warm start (colour after colour), arms after a move.
+                refreshArms(one.contacts, one.bodies);
+                refreshBlockArms(blocks.all(), wide.bodies, code);
+                measureApproach(one.contacts, one.bodies, substep);
+                warmStartRigidContacts(one.contacts, one.bodies, h, maxTurn);
+                measureBlockApproach(blocks.all(), wide.contacts, wide.bodies, substep, code);
+                warmStartBlocks(blocks.all(), wide.bodies, h, maxTurn, code);
+                for (RigidState& b : one.bodies) b.turnRotation = {b.turnRotation.y, -b.turnRotation.x};
+                for (RigidState& b : wide.bodies) b.turnRotation = {b.turnRotation.y, -b.turnRotation.x};
+                refreshArms(one.contacts, one.bodies);
+                refreshBlockArms(blocks.all(), wide.bodies, code);
+                blocks.unpack(wide.contacts);
+                requireSameBits(one, wide);
+                from = one;
+            }
         }
     }
 }

@@ -1,8 +1,6 @@
 // The rigid contacts' greedy colouring (see rigid_colours.hpp).
 #include "rigid_colours.hpp"
 
-#include "rigid_contact_lanes.hpp"
-
 #include <bit>
 
 namespace rube {
@@ -33,34 +31,6 @@ void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const Ri
     for (std::size_t k = 0; k < contacts.size(); ++k)
         sorted_[static_cast<std::size_t>(next[colour_[k]]++)] = contacts[k];
     contacts.swap(sorted_);
-}
-
-void solveContactLanes(std::span<RigidContact> contacts, std::span<RigidState> bodies,
-                       const RigidContactSoftness& softness, double h, bool useBias) {
-#ifdef RUBE_RIGID_LANES_SSE2
-    if (contacts.empty()) return;
-    const double invH = 1.0 / h;
-    RigidContact standIn; // the odd contact out's partner: no points, no friction, writes nothing
-    standIn.bodyA = contacts[0].bodyA;
-    standIn.bodyB = standIn.bodyA;
-    std::size_t k = 0;
-    for (; k + 1 < contacts.size(); k += 2)
-        solveContactPair<LanePair>(contacts[k], contacts[k + 1], bodies, softness, invH, useBias, true);
-    if (k < contacts.size()) solveContactPair<LanePair>(contacts[k], standIn, bodies, softness, invH, useBias, false);
-#else
-    solveRigidContacts(contacts, bodies, softness, h, useBias);
-#endif
-}
-
-void solveColouredContacts(std::span<RigidContact> contacts, const RigidColours& colours, std::span<RigidState> bodies,
-                           const RigidContactSoftness& softness, double h, bool useBias, WorkerPool* pool) {
-    const auto overflow = static_cast<std::size_t>(colours.start(kRigidColours));
-    sweepColours(pool, colours, [&](std::size_t first, std::size_t last) {
-        const std::span<RigidContact> run = contacts.subspan(first, last - first);
-        // The overflow's contacts may share bodies: one after the other.
-        if (first >= overflow) solveRigidContacts(run, bodies, softness, h, useBias);
-        else solveContactLanes(run, bodies, softness, h, useBias);
-    });
 }
 
 } // namespace rube

@@ -68,16 +68,4 @@ void sweepColours(WorkerPool* pool, const RigidColours& colours, Sweep sweep) {
     pool->run(kRigidColours + 1, sizes, chunks, work);
 }
 
-/// solveRigidContacts over the contacts of one colour (or of the overflow), two at a time in the
-/// lanes of LanePair (rigid_contact_lanes.hpp). The same bits as solveRigidContacts over the same
-/// contacts, with SSE2 or without.
-void solveContactLanes(std::span<RigidContact> contacts, std::span<RigidState> bodies,
-                       const RigidContactSoftness& softness, double h, bool useBias);
-
-/// solveRigidContacts over `contacts` in colour order (as `colours` built them), sharing each colour
-/// among `pool`'s workers (sweepColours); the overflow one by one. The same bits as
-/// solveRigidContacts over the same list, with SSE2 or without, for any number of workers.
-void solveColouredContacts(std::span<RigidContact> contacts, const RigidColours& colours, std::span<RigidState> bodies,
-                           const RigidContactSoftness& softness, double h, bool useBias, WorkerPool* pool = nullptr);
-
 } // namespace rube

@@ -1,205 +1,347 @@
 #pragma once
-// Internal: two rigid contacts of one colour solved at once, one in each lane of a pair of doubles
-// (Box2D v3's wide contact solver, two wide for SSE2's __m128d). Contacts of a colour share no
-// movable body (rigid_colours.hpp) and immovable bodies are never written, so solving a pair together
-// is solving them one after the other. Each lane runs exactly the operations of solveRigidContacts
-// (rigid_contacts.cpp) in the same order: std::max(a, b) is (a < b ? b : a), which is SSE2's
-// maxpd(b, a); std::min(a, b) is minpd(b, a); a skipped point keeps its velocities by a bitwise
-// select. So SSE2 and the plain pair of doubles (ScalarPair, the fallback without SSE2) give the
-// same bits as the scalar sweep, under -ffp-contract=off on any compiler and optimisation level
-// (tests/rigid_lanes_test.cpp). Not part of the public API.
+// Internal: one Gauss-Seidel step over a block's contacts at once, one contact in each lane (Box2D
+// v3's wide contact solver; rigid_contact_blocks.hpp). Contacts of a colour share no movable body
+// (rigid_colours.hpp) and immovable bodies are never written, so solving a block's lanes together
+// is solving its contacts one after the other. Each lane runs exactly the operations of
+// solveRigidContacts (rigid_contacts.cpp) in the same order, and a vector's operators are the
+// lane's IEEE double operations: std::max(a, b) is spelt a < b ? b : a lane-wise, std::min(a, b)
+// b < a ? b : a, and a lane that skips a point keeps its velocities by a select. So the sweep gives
+// the scalar sweep's bits under -ffp-contract=off whatever instructions the compiler picks (AVX,
+// SSE2 or none), on any compiler and optimisation level (tests/rigid_lanes_test.cpp).
+//
+// Why four at a time: a contact's steps form one chain of dependent operations (each impulse waits
+// for the velocities the last one wrote, about 50 cycles a point), so the sweep is as fast as the
+// chains it runs side by side. Not part of the public API.
 
-#include "rigid_contacts.hpp"
+#include "rigid_contact_blocks.hpp"
 
-#if defined(__SSE2__) && !defined(RUBE_NO_SIMD)
-#include <emmintrin.h>
-#define RUBE_RIGID_LANES_SSE2 1
+#include <cmath>
+#include <cstring>
+
+// Every function here taking or returning a vector is always inlined into the sweep that calls it,
+// each compiled for one target (rigid_contact_blocks.cpp), so no vector ever crosses a call whose
+// ABI AVX would change: GCC's note that it might is moot.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 namespace rube {
 
-/// Two doubles with lane-wise operations: the portable fallback, and the reference the SSE2 pair must match.
-struct ScalarPair {
-    double v[2];
-    struct Mask {
-        bool m[2];
-    };
-    static ScalarPair set(double a, double b) { return {{a, b}}; }
-    static ScalarPair splat(double a) { return {{a, a}}; }
-    static Mask lanes(bool a, bool b) { return {{a, b}}; }
-    double lane(int i) const { return v[i]; }
-    friend ScalarPair operator+(ScalarPair a, ScalarPair b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}}; }
-    friend ScalarPair operator-(ScalarPair a, ScalarPair b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
-    friend ScalarPair operator*(ScalarPair a, ScalarPair b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
-    friend ScalarPair operator-(ScalarPair a) { return {{-a.v[0], -a.v[1]}}; }
-    /// std::max(a, b) lane-wise: a < b ? b : a.
-    friend ScalarPair maxOf(ScalarPair a, ScalarPair b) {
-        return {{a.v[0] < b.v[0] ? b.v[0] : a.v[0], a.v[1] < b.v[1] ? b.v[1] : a.v[1]}};
+/// Half a block's lanes: SSE2's width, how processors without AVX run a block (two halves one after
+/// the other; they are independent contacts, so the order does not matter).
+using HalfLanes = double __attribute__((vector_size(kBlockLanes / 2 * sizeof(double))));
+/// A lane-wise truth of vector V.
+template <class V>
+using MaskOf = decltype(V{} < V{});
+/// Lanes in vector V.
+template <class V>
+inline constexpr int kWidth = static_cast<int>(sizeof(V) / sizeof(double));
+
+/// std::max(a, b) lane-wise: a < b ? b : a.
+template <class V>
+[[gnu::always_inline]] inline V maxOf(V a, V b) {
+    return a < b ? b : a;
+}
+/// std::min(a, b) lane-wise: b < a ? b : a.
+template <class V>
+[[gnu::always_inline]] inline V minOf(V a, V b) {
+    return b < a ? b : a;
+}
+
+/// x in every lane.
+template <class V>
+[[gnu::always_inline]] inline V splat(double x) {
+    V v;
+    for (int i = 0; i < kWidth<V>; ++i) v[i] = x;
+    return v;
+}
+
+/// The truths t[0 .. width) as a mask.
+template <class V>
+[[gnu::always_inline]] inline MaskOf<V> maskOf(const bool* t) {
+    MaskOf<V> m;
+    for (int i = 0; i < kWidth<V>; ++i) m[i] = t[i] ? -1 : 0;
+    return m;
+}
+
+/// The lanes [base, base + width of V) of a block's contacts: where a pass reads and writes its fields.
+template <class V>
+struct Slice {
+    int base = 0;
+    [[gnu::always_inline]] V operator()(const Lanes& field) const {
+        V v;
+        std::memcpy(&v, reinterpret_cast<const double*>(&field) + base, sizeof v);
+        return v;
     }
-    /// std::min(a, b) lane-wise: b < a ? b : a.
-    friend ScalarPair minOf(ScalarPair a, ScalarPair b) {
-        return {{b.v[0] < a.v[0] ? b.v[0] : a.v[0], b.v[1] < a.v[1] ? b.v[1] : a.v[1]}};
-    }
-    friend Mask greater(ScalarPair a, ScalarPair b) { return {{a.v[0] > b.v[0], a.v[1] > b.v[1]}}; }
-    friend ScalarPair select(Mask m, ScalarPair a, ScalarPair b) {
-        return {{m.m[0] ? a.v[0] : b.v[0], m.m[1] ? a.v[1] : b.v[1]}};
+    [[gnu::always_inline]] void set(Lanes& field, V v) const {
+        std::memcpy(reinterpret_cast<double*>(&field) + base, &v, sizeof v);
     }
 };
 
-#ifdef RUBE_RIGID_LANES_SSE2
-/// Two doubles in one SSE2 register.
-struct Sse2Pair {
-    __m128d v;
-    struct Mask {
-        __m128d m;
-    };
-    static Sse2Pair set(double a, double b) { return {_mm_set_pd(b, a)}; }
-    static Sse2Pair splat(double a) { return {_mm_set1_pd(a)}; }
-    static Mask lanes(bool a, bool b) { return {_mm_castsi128_pd(_mm_set_epi64x(b ? -1 : 0, a ? -1 : 0))}; }
-    double lane(int i) const { return i == 0 ? _mm_cvtsd_f64(v) : _mm_cvtsd_f64(_mm_unpackhi_pd(v, v)); }
-    friend Sse2Pair operator+(Sse2Pair a, Sse2Pair b) { return {_mm_add_pd(a.v, b.v)}; }
-    friend Sse2Pair operator-(Sse2Pair a, Sse2Pair b) { return {_mm_sub_pd(a.v, b.v)}; }
-    friend Sse2Pair operator*(Sse2Pair a, Sse2Pair b) { return {_mm_mul_pd(a.v, b.v)}; }
-    friend Sse2Pair operator-(Sse2Pair a) { return {_mm_xor_pd(a.v, _mm_set1_pd(-0.0))}; }
-    // maxpd(x, y) is x > y ? x : y, so maxpd(b, a) is a < b ? b : a: std::max(a, b), NaN and -0 alike.
-    friend Sse2Pair maxOf(Sse2Pair a, Sse2Pair b) { return {_mm_max_pd(b.v, a.v)}; }
-    // minpd(x, y) is x < y ? x : y, so minpd(b, a) is b < a ? b : a: std::min(a, b).
-    friend Sse2Pair minOf(Sse2Pair a, Sse2Pair b) { return {_mm_min_pd(b.v, a.v)}; }
-    friend Mask greater(Sse2Pair a, Sse2Pair b) { return {_mm_cmpgt_pd(a.v, b.v)}; }
-    friend Sse2Pair select(Mask m, Sse2Pair a, Sse2Pair b) {
-        return {_mm_or_pd(_mm_and_pd(m.m, a.v), _mm_andnot_pd(m.m, b.v))};
+/// The bodies of one side of a slice's contacts, and the slice's largest point count.
+template <class V>
+struct SliceBodies {
+    RigidState* a[kWidth<V>];
+    RigidState* b[kWidth<V>];
+    int count = 0;
+    [[gnu::always_inline]] SliceBodies(const RigidBlock& k, int base, std::span<RigidState> bodies) {
+        for (int i = 0; i < kWidth<V>; ++i) {
+            a[i] = &bodies[static_cast<std::size_t>(k.bodyA[base + i])];
+            b[i] = &bodies[static_cast<std::size_t>(k.bodyB[base + i])];
+            count = k.count[base + i] > count ? k.count[base + i] : count;
+        }
     }
 };
-using LanePair = Sse2Pair;
-#else
-using LanePair = ScalarPair;
-#endif
 
-/// Whether a sweep may write a body: one that cannot move keeps its velocities bit for bit.
-inline bool movableBody(const RigidState& s) { return s.inverseMass > 0.0 || s.inverseInertia > 0.0; }
+/// Field f of the lanes' bodies s[0 .. width).
+template <class V>
+[[gnu::always_inline]] inline V gather(RigidState* const* s, double RigidState::*f) {
+    V v;
+    for (int i = 0; i < kWidth<V>; ++i) v[i] = s[i]->*f;
+    return v;
+}
+/// Component c of vector field f of the lanes' bodies.
+template <class V>
+[[gnu::always_inline]] inline V gather(RigidState* const* s, Vec2 RigidState::*f, double Vec2::*c) {
+    V v;
+    for (int i = 0; i < kWidth<V>; ++i) v[i] = (s[i]->*f).*c;
+    return v;
+}
 
-/// One side of a pair of contacts, gathered lane-wise.
-template <class W>
+/// One side of a slice's contacts, gathered lane-wise.
+template <class V>
 struct LaneBody {
-    W vx, vy, omega, inverseMass, inverseInertia;
-    LaneBody(const RigidState& s0, const RigidState& s1)
-        : vx(W::set(s0.velocity.x, s1.velocity.x)), vy(W::set(s0.velocity.y, s1.velocity.y)),
-          omega(W::set(s0.omega, s1.omega)), inverseMass(W::set(s0.inverseMass, s1.inverseMass)),
-          inverseInertia(W::set(s0.inverseInertia, s1.inverseInertia)) {}
+    V vx, vy, omega, inverseMass, inverseInertia;
+    [[gnu::always_inline]] explicit LaneBody(RigidState* const* s)
+        : vx(gather<V>(s, &RigidState::velocity, &Vec2::x)), vy(gather<V>(s, &RigidState::velocity, &Vec2::y)),
+          omega(gather<V>(s, &RigidState::omega)), inverseMass(gather<V>(s, &RigidState::inverseMass)),
+          inverseInertia(gather<V>(s, &RigidState::inverseInertia)) {}
     /// v += p / m, omega += (r x p) / I, in the lanes of `apply` only (applyImpulse, lane-wise);
-    /// `both` says both lanes apply, and the selects are skipped (the same bits).
-    void apply(bool both, typename W::Mask apply, W rx, W ry, W px, W py) {
-        const W x = vx + px * inverseMass, y = vy + py * inverseMass;
-        const W w = omega + inverseInertia * (rx * py - ry * px);
-        vx = both ? x : select(apply, x, vx);
-        vy = both ? y : select(apply, y, vy);
-        omega = both ? w : select(apply, w, omega);
+    /// `all` says every lane applies, and the selects are skipped (the same bits).
+    [[gnu::always_inline]] void apply(bool all, MaskOf<V> apply, V rx, V ry, V px, V py) {
+        const V x = vx + px * inverseMass, y = vy + py * inverseMass;
+        const V w = omega + inverseInertia * (rx * py - ry * px);
+        vx = all ? x : (apply ? x : vx);
+        vy = all ? y : (apply ? y : vy);
+        omega = all ? w : (apply ? w : omega);
     }
-    void store(RigidState& s, int lane) const {
+    [[gnu::always_inline]] void store(RigidState& s, int lane) const {
         if (!movableBody(s)) return;
-        s.velocity = {vx.lane(lane), vy.lane(lane)};
-        s.omega = omega.lane(lane);
+        s.velocity = {vx[lane], vy[lane]};
+        s.omega = omega[lane];
     }
 };
 
-/// One Gauss-Seidel step over contacts c0 and c1 (of one colour) at once: solveRigidContacts' loop
-/// body in two lanes. `write1` false when c1 is a stand-in for an odd contact out.
-template <class W>
-void solveContactPair(RigidContact& c0, RigidContact& c1, std::span<RigidState> bodies,
-                      const RigidContactSoftness& softness, double invH, bool useBias, bool write1) {
-    RigidState& sa0 = bodies[static_cast<std::size_t>(c0.bodyA)];
-    RigidState& sa1 = bodies[static_cast<std::size_t>(c1.bodyA)];
-    RigidState& sb0 = bodies[static_cast<std::size_t>(c0.bodyB)];
-    RigidState& sb1 = bodies[static_cast<std::size_t>(c1.bodyB)];
-    LaneBody<W> a(sa0, sa1), b(sb0, sb1);
-    const Softness& soft0 = c0.againstFixed ? softness.fixed : softness.movable;
-    const Softness& soft1 = c1.againstFixed ? softness.fixed : softness.movable;
-    const W zero = W::splat(0.0), one = W::splat(1.0);
-    const W nx = W::set(c0.normal.x, c1.normal.x), ny = W::set(c0.normal.y, c1.normal.y);
-    const W dpx = W::set(sb0.displacement.x, sb1.displacement.x) - W::set(sa0.displacement.x, sa1.displacement.x);
-    const W dpy = W::set(sb0.displacement.y, sb1.displacement.y) - W::set(sa0.displacement.y, sa1.displacement.y);
-    W softBias = zero, softMass = one, softImpulse = zero;
-    if (useBias) {
-        softBias = W::set(soft0.biasRate, soft1.biasRate);
-        softMass = W::set(soft0.massScale, soft1.massScale);
-        softImpulse = W::set(soft0.impulseScale, soft1.impulseScale);
+/// refreshArms over a slice: rotate(q, r) = (q.x r.x - q.y r.y, q.y r.x + q.x r.y) lane-wise; a
+/// stand-in's zero anchors stay zero.
+template <class V>
+[[gnu::always_inline]] inline void refreshArmsOfSlice(RigidBlock& k, int base, std::span<RigidState> bodies) {
+    const Slice<V> at{base};
+    const SliceBodies<V> s(k, base, bodies);
+    const V qAx = gather<V>(s.a, &RigidState::turnRotation, &Vec2::x);
+    const V qAy = gather<V>(s.a, &RigidState::turnRotation, &Vec2::y);
+    const V qBx = gather<V>(s.b, &RigidState::turnRotation, &Vec2::x);
+    const V qBy = gather<V>(s.b, &RigidState::turnRotation, &Vec2::y);
+    for (int j = 0; j < s.count; ++j) {
+        RigidBlockPoint& p = k.points[j];
+        const V ax = at(p.anchorAx), ay = at(p.anchorAy), bx = at(p.anchorBx), by = at(p.anchorBy);
+        at.set(p.armAx, qAx * ax - qAy * ay);
+        at.set(p.armAy, qAy * ax + qAx * ay);
+        at.set(p.armBx, qBx * bx - qBy * by);
+        at.set(p.armBy, qBy * bx + qBx * by);
     }
-    const W invHw = W::splat(invH), pushLimit = W::splat(-softness.maxPushSpeed);
-    const int count = c0.count > c1.count ? c0.count : c1.count;
-    for (int k = 0; k < count; ++k) {
-        RigidContactPoint& p0 = c0.points[k];
-        RigidContactPoint& p1 = c1.points[k];
-        const typename W::Mask has = W::lanes(k < c0.count, k < c1.count);
-        const W rAx = W::set(p0.armA.x, p1.armA.x), rAy = W::set(p0.armA.y, p1.armA.y);
-        const W rBx = W::set(p0.armB.x, p1.armB.x), rBy = W::set(p0.armB.y, p1.armB.y);
-        const W s = nx * ((dpx + rBx) - rAx) + ny * ((dpy + rBy) - rAy) + W::set(p0.baseSeparation, p1.baseSeparation);
-        const typename W::Mask speculative = greater(s, zero);
+}
+
+/// measureApproach over a slice: each real point that has not pushed yet this step notes its
+/// approach speed -vn, with this contact's own delivered impulses taken back out of vn (the formula
+/// at measureApproach), and the substep, into `contacts` (the list the blocks were packed from).
+template <class V>
+[[gnu::always_inline]] inline void measureApproachOfSlice(const RigidBlock& k, int base,
+                                                          std::span<RigidContact> contacts,
+                                                          std::span<RigidState> bodies, int substep) {
+    constexpr int W = kWidth<V>;
+    const Slice<V> at{base};
+    const SliceBodies<V> s(k, base, bodies);
+    const LaneBody<V> a(s.a), b(s.b);
+    const V nx = at(k.normalX), ny = at(k.normalY), tx = at(k.tangentX), ty = at(k.tangentY);
+    const V zero = splat<V>(0.0);
+    for (int j = 0; j < s.count; ++j) {
+        const RigidBlockPoint& p = k.points[j];
+        bool measured[W];
+        bool any = false;
+        for (int i = 0; i < W; ++i) {
+            measured[i] = j < k.count[base + i] && !(p.maxNormalImpulse[base + i] > 0.0);
+            any = any || measured[i];
+        }
+        if (!any) continue;
+        const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
+        V vn = nx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
+               ny * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
+        const V ka = a.inverseInertia * (rAx * ny - rAy * nx), kb = b.inverseInertia * (rBx * ny - rBy * nx);
+        for (int q = 0; q < s.count; ++q) {
+            const RigidBlockPoint& o = k.points[q];
+            bool real[W];
+            for (int i = 0; i < W; ++i) real[i] = q < k.count[base + i];
+            const V deliveredNormal = at(o.deliveredNormal), deliveredTangent = at(o.deliveredTangent);
+            const MaskOf<V> takes = maskOf<V>(real) & ~((deliveredNormal == zero) & (deliveredTangent == zero));
+            const V oAx = at(o.armAx), oAy = at(o.armAy), oBx = at(o.armBx), oBy = at(o.armBy);
+            const V crossAn = oAx * ny - oAy * nx, crossBn = oBx * ny - oBy * nx;
+            const V crossAt = oAx * ty - oAy * tx, crossBt = oBx * ty - oBy * tx;
+            const V afterNormal = vn - deliveredNormal * (a.inverseMass + b.inverseMass + ka * crossAn + kb * crossBn);
+            const V afterTangent = afterNormal - deliveredTangent * (ka * crossAt + kb * crossBt);
+            vn = takes ? afterTangent : vn;
+        }
+        for (int i = 0; i < W; ++i) {
+            if (!measured[i]) continue;
+            RigidContactPoint& point = contacts[static_cast<std::size_t>(k.contact[base + i])].points[j];
+            point.approachSpeed = -vn[i];
+            point.touchSubstep = substep;
+        }
+    }
+}
+
+/// warmStartRigidContacts over a slice: each point's last impulses applied again, in the lanes whose
+/// bodies turn less than `maxTurn` in the substep h; the others start from zero.
+template <class V>
+[[gnu::always_inline]] inline void warmStartSlice(RigidBlock& k, int base, std::span<RigidState> bodies, double h,
+                                                  double maxTurn) {
+    constexpr int W = kWidth<V>;
+    const Slice<V> at{base};
+    const SliceBodies<V> s(k, base, bodies);
+    bool warm[W];
+    for (int i = 0; i < W; ++i)
+        warm[i] = !(std::abs(s.a[i]->omega) * h > maxTurn || std::abs(s.b[i]->omega) * h > maxTurn);
+    LaneBody<V> a(s.a), b(s.b);
+    const V nx = at(k.normalX), ny = at(k.normalY), tx = at(k.tangentX), ty = at(k.tangentY);
+    const V zero = splat<V>(0.0);
+    for (int j = 0; j < s.count; ++j) {
+        RigidBlockPoint& p = k.points[j];
+        bool on[W], cold[W];
+        bool all = true;
+        for (int i = 0; i < W; ++i) {
+            on[i] = j < k.count[base + i] && warm[i];
+            cold[i] = j < k.count[base + i] && !warm[i];
+            all = all && on[i];
+        }
+        const MaskOf<V> has = maskOf<V>(on), zeroed = maskOf<V>(cold);
+        const V normalImpulse = at(p.normalImpulse), tangentImpulse = at(p.tangentImpulse);
+        // impulse = n lambda_n + t lambda_t; A takes -impulse at its arm, B +impulse at its own.
+        const V ix = nx * normalImpulse + tx * tangentImpulse;
+        const V iy = ny * normalImpulse + ty * tangentImpulse;
+        const V deliveredNormal = at(p.deliveredNormal), deliveredTangent = at(p.deliveredTangent);
+        at.set(p.deliveredNormal, has ? deliveredNormal + normalImpulse : deliveredNormal);
+        at.set(p.deliveredTangent, has ? deliveredTangent + tangentImpulse : deliveredTangent);
+        a.apply(all, has, at(p.armAx), at(p.armAy), -ix, -iy);
+        b.apply(all, has, at(p.armBx), at(p.armBy), ix, iy);
+        at.set(p.normalImpulse, zeroed ? zero : normalImpulse);
+        at.set(p.tangentImpulse, zeroed ? zero : tangentImpulse);
+    }
+    // As in the solve: a body that cannot move is never written, so a colour may be shared among workers.
+    for (int i = 0; i < W; ++i) {
+        if (k.contact[base + i] < 0 || !warm[i]) continue;
+        a.store(*s.a[i], i);
+        b.store(*s.b[i], i);
+    }
+}
+
+/// solveRigidContacts' loop body over a slice's contacts, one in each lane. Every field of a point
+/// is stored in all lanes, those of a lane past its contact's points (or of a stand-in) included:
+/// nothing reads them but the next sweep's masked lanes.
+template <class V>
+[[gnu::always_inline]] inline void solveSlice(RigidBlock& k, int base, std::span<RigidState> bodies,
+                                              const RigidContactSoftness& softness, double invH, bool useBias) {
+    constexpr int W = kWidth<V>;
+    const Slice<V> at{base};
+    const SliceBodies<V> s(k, base, bodies);
+    bool rubs[W];
+    bool anyRubs = false;
+    for (int i = 0; i < W; ++i) {
+        rubs[i] = k.friction[base + i] > 0.0;
+        anyRubs = anyRubs || rubs[i];
+    }
+    LaneBody<V> a(s.a), b(s.b);
+    const V zero = splat<V>(0.0), one = splat<V>(1.0);
+    const V nx = at(k.normalX), ny = at(k.normalY);
+    const V dpx = gather<V>(s.b, &RigidState::displacement, &Vec2::x) -
+                  gather<V>(s.a, &RigidState::displacement, &Vec2::x);
+    const V dpy = gather<V>(s.b, &RigidState::displacement, &Vec2::y) -
+                  gather<V>(s.a, &RigidState::displacement, &Vec2::y);
+    V softBias = zero, softMass = one, softImpulse = zero;
+    if (useBias)
+        for (int i = 0; i < W; ++i) {
+            const Softness& soft = k.againstFixed[base + i] ? softness.fixed : softness.movable;
+            softBias[i] = soft.biasRate;
+            softMass[i] = soft.massScale;
+            softImpulse[i] = soft.impulseScale;
+        }
+    const V invHw = splat<V>(invH), pushLimit = splat<V>(-softness.maxPushSpeed);
+    for (int j = 0; j < s.count; ++j) {
+        RigidBlockPoint& p = k.points[j];
+        bool on[W];
+        bool all = true;
+        for (int i = 0; i < W; ++i) {
+            on[i] = j < k.count[base + i];
+            all = all && on[i];
+        }
+        const MaskOf<V> has = maskOf<V>(on);
+        const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
+        const V gap = nx * ((dpx + rBx) - rAx) + ny * ((dpy + rBy) - rAy) + at(p.baseSeparation);
+        const MaskOf<V> speculative = gap > zero;
         // Penetrating: the soft push-out when biased (bias 0, mass scale 1, impulse scale 0 when relaxing).
-        W bias = useBias ? maxOf(softBias * s, pushLimit) : zero;
-        bias = select(speculative, s * invHw, bias);
-        const W massScale = select(speculative, one, softMass);
-        const W impulseScale = select(speculative, zero, softImpulse);
-        const W vn = nx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
+        V bias = useBias ? maxOf(softBias * gap, pushLimit) : zero;
+        bias = speculative ? gap * invHw : bias;
+        const V massScale = speculative ? one : softMass;
+        const V impulseScale = speculative ? zero : softImpulse;
+        const V vn = nx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
                      ny * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
-        const W old = W::set(p0.normalImpulse, p1.normalImpulse);
-        const W lambda = -W::set(p0.normalMass, p1.normalMass) * massScale * (vn + bias) - impulseScale * old;
-        const W total = maxOf(old + lambda, zero);
-        const W delta = total - old;
-        const W delivered = W::set(p0.deliveredNormal, p1.deliveredNormal) + delta;
-        const W most = maxOf(W::set(p0.maxNormalImpulse, p1.maxNormalImpulse), total);
-        const W minus = -delta;
-        const bool both = k < c0.count && k < c1.count;
-        a.apply(both, has, rAx, rAy, nx * minus, ny * minus);
-        b.apply(both, has, rBx, rBy, nx * delta, ny * delta);
-        if (k < c0.count) {
-            p0.normalImpulse = total.lane(0);
-            p0.deliveredNormal = delivered.lane(0);
-            p0.maxNormalImpulse = most.lane(0);
-        }
-        if (write1 && k < c1.count) {
-            p1.normalImpulse = total.lane(1);
-            p1.deliveredNormal = delivered.lane(1);
-            p1.maxNormalImpulse = most.lane(1);
-        }
+        const V old = at(p.normalImpulse);
+        const V lambda = -at(p.normalMass) * massScale * (vn + bias) - impulseScale * old;
+        const V total = maxOf(old + lambda, zero);
+        const V delta = total - old;
+        const V minus = -delta;
+        a.apply(all, has, rAx, rAy, nx * minus, ny * minus);
+        b.apply(all, has, rBx, rBy, nx * delta, ny * delta);
+        at.set(p.normalImpulse, total);
+        at.set(p.deliveredNormal, at(p.deliveredNormal) + delta);
+        at.set(p.maxNormalImpulse, maxOf(at(p.maxNormalImpulse), total));
     }
-    const bool rubs0 = c0.friction > 0.0, rubs1 = c1.friction > 0.0;
-    if (rubs0 || rubs1) {
-        const W tx = W::set(c0.tangent.x, c1.tangent.x), ty = W::set(c0.tangent.y, c1.tangent.y);
-        const W friction = W::set(c0.friction, c1.friction);
-        for (int k = 0; k < count; ++k) {
-            RigidContactPoint& p0 = c0.points[k];
-            RigidContactPoint& p1 = c1.points[k];
-            const bool on0 = rubs0 && k < c0.count, on1 = rubs1 && k < c1.count;
-            const typename W::Mask has = W::lanes(on0, on1);
-            const W rAx = W::set(p0.armA.x, p1.armA.x), rAy = W::set(p0.armA.y, p1.armA.y);
-            const W rBx = W::set(p0.armB.x, p1.armB.x), rBy = W::set(p0.armB.y, p1.armB.y);
-            const W vt = tx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
+    if (anyRubs) {
+        const V tx = at(k.tangentX), ty = at(k.tangentY), friction = at(k.friction);
+        for (int j = 0; j < s.count; ++j) {
+            RigidBlockPoint& p = k.points[j];
+            bool on[W];
+            bool all = true;
+            for (int i = 0; i < W; ++i) {
+                on[i] = rubs[i] && j < k.count[base + i];
+                all = all && on[i];
+            }
+            const MaskOf<V> has = maskOf<V>(on);
+            const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
+            const V vt = tx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
                          ty * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
-            const W limit = friction * W::set(p0.normalImpulse, p1.normalImpulse);
-            const W old = W::set(p0.tangentImpulse, p1.tangentImpulse);
-            const W v = old - W::set(p0.tangentMass, p1.tangentMass) * vt;
-            const W total = minOf(maxOf(v, -limit), limit);
-            const W delta = total - old;
-            const W delivered = W::set(p0.deliveredTangent, p1.deliveredTangent) + delta;
-            const W minus = -delta;
-            a.apply(on0 && on1, has, rAx, rAy, tx * minus, ty * minus);
-            b.apply(on0 && on1, has, rBx, rBy, tx * delta, ty * delta);
-            if (on0) {
-                p0.tangentImpulse = total.lane(0);
-                p0.deliveredTangent = delivered.lane(0);
-            }
-            if (write1 && on1) {
-                p1.tangentImpulse = total.lane(1);
-                p1.deliveredTangent = delivered.lane(1);
-            }
+            const V limit = friction * at(p.normalImpulse);
+            const V old = at(p.tangentImpulse);
+            const V total = minOf(maxOf(old - at(p.tangentMass) * vt, -limit), limit);
+            const V delta = total - old;
+            const V minus = -delta;
+            a.apply(all, has, rAx, rAy, tx * minus, ty * minus);
+            b.apply(all, has, rBx, rBy, tx * delta, ty * delta);
+            // A lane without friction keeps its impulses as the scalar sweep leaves them.
+            const V delivered = at(p.deliveredTangent);
+            at.set(p.tangentImpulse, has ? total : old);
+            at.set(p.deliveredTangent, has ? delivered + delta : delivered);
         }
     }
-    a.store(sa0, 0);
-    b.store(sb0, 0);
-    if (write1) {
-        a.store(sa1, 1);
-        b.store(sb1, 1);
+    for (int i = 0; i < W; ++i) {
+        if (k.contact[base + i] < 0) continue;
+        a.store(*s.a[i], i);
+        b.store(*s.b[i], i);
     }
 }
 
 } // namespace rube
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif

@@ -1,8 +1,6 @@
 // Rigid contact constraints: build, warm start, soft solve with friction, restitution.
 #include "rigid_contacts.hpp"
 
-#include "rigid_contact_lanes.hpp"
-
 #include <algorithm>
 #include <cmath>
 

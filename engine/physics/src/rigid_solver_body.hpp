@@ -23,6 +23,11 @@ struct RigidState {
     double inverseInertia = 0.0;
 };
 
+/// Whether a sweep may write a body: one that cannot move keeps its velocities bit for bit (its
+/// velocity plus 0 p could turn -0 into +0), so contacts that share only such a body may be solved
+/// at once (rigid_colours.hpp).
+inline bool movableBody(const RigidState& s) { return s.inverseMass > 0.0 || s.inverseInertia > 0.0; }
+
 /// One side of a rigid contact: rigid body `index`, or solver body `index` of the circle solver
 /// (circles first, then segments).
 struct BodySide {

@@ -31,8 +31,8 @@ constexpr double kPivotDampingRatio = 2.0;
 /// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
 /// a body's update costs a few nanoseconds, a hand-over about a microsecond.
 constexpr std::size_t kBodyChunk = 256;
-/// Contacts in a chunk of a per-contact loop (measureApproach, refreshArms).
-constexpr std::size_t kContactLoopChunk = 64;
+/// Blocks of two contacts in a chunk of a per-contact loop (the approach measure, the arms).
+constexpr std::size_t kBlockLoopChunk = 32;
 /// Candidate pairs in a chunk of the narrowphase (a manifold costs about 0.1 us).
 constexpr std::size_t kPairChunk = 64;
 /// A pair of joint ends as one number: rigid body i as i, circle c as -1 - c.
@@ -301,7 +301,8 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
     }
     chooseSoftness(contacts_, states_);
     colours_.build(contacts_, states_);
-    refreshArms(contacts_, states_);
+    blocks_.pack(contacts_, colours_);
+    refreshBlockArms(blocks_.all(), states_);
 }
 
 void RigidStage::loadOthers() {
@@ -339,17 +340,17 @@ void RigidStage::warmStart() {
     loadOthers();
     const int substep = substep_++;
     // Each contact reads its bodies and writes only itself: any share of the list gives the same bits.
-    forShares(pool_, contacts_.size(), kContactLoopChunk, [&](std::size_t first, std::size_t last) {
-        measureApproach(std::span(contacts_).subspan(first, last - first), states_, substep);
+    const std::span<RigidBlock> blocks = blocks_.all();
+    forShares(pool_, blocks.size(), kBlockLoopChunk, [&](std::size_t first, std::size_t last) {
+        measureBlockApproach(blocks.subspan(first, last - first), contacts_, states_, substep);
     });
     warmStartPivots(pivots_, view_);
     if (!joints_.empty()) {
         joints_.warmStart();
         loadOthers(); // the joints may have pushed a listed circle
     }
-    sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {
-        warmStartRigidContacts(std::span(contacts_).subspan(first, last - first), states_, substepTime_,
-                               kMaxWarmStartTurn);
+    sweepBlocks(pool_, blocks_, [&](std::size_t first, std::size_t last) {
+        warmStartBlocks(blocks.subspan(first, last - first), states_, substepTime_, kMaxWarmStartTurn);
     });
     storeOthers();
 }
@@ -358,7 +359,10 @@ void RigidStage::solve(double h, bool useBias) {
     solvePivots(pivots_, view_, pivotSoftness_, useBias);
     if (!joints_.empty()) joints_.solve(useBias);
     loadOthers();
-    solveColouredContacts(contacts_, colours_, states_, contactSoftness_, h, useBias, pool_);
+    const std::span<RigidBlock> blocks = blocks_.all();
+    sweepBlocks(pool_, blocks_, [&](std::size_t first, std::size_t last) {
+        solveBlocks(blocks.subspan(first, last - first), states_, contactSoftness_, h, useBias);
+    });
     storeOthers();
 }
 
@@ -381,12 +385,13 @@ void RigidStage::integratePositions(double h) {
         }
         if (count != 0) clamps.fetch_add(count, std::memory_order_relaxed);
     };
+    const std::span<RigidBlock> blocks = blocks_.all();
     const auto arms = [&](std::size_t first, std::size_t last) {
-        refreshArms(std::span(contacts_).subspan(first, last - first), states_);
+        refreshBlockArms(blocks.subspan(first, last - first), states_);
     };
     if (worthSharing(pool_, rigidCount_, kBodyChunk)) {
         // Two phases: the arms read both bodies' turns.
-        const std::size_t sizes[2] = {rigidCount_, contacts_.size()}, chunks[2] = {kBodyChunk, kContactLoopChunk};
+        const std::size_t sizes[2] = {rigidCount_, blocks.size()}, chunks[2] = {kBodyChunk, kBlockLoopChunk};
         auto work = [&](int phase, std::size_t first, std::size_t last) {
             if (phase == 0) move(first, last);
             else arms(first, last);
@@ -394,14 +399,15 @@ void RigidStage::integratePositions(double h) {
         pool_->run(2, sizes, chunks, work);
     } else {
         move(0, rigidCount_);
-        arms(0, contacts_.size());
+        arms(0, blocks.size());
     }
     clamps_ += clamps.load(std::memory_order_relaxed);
     if (!joints_.empty()) joints_.integrateCircleTurns(h);
 }
 
 void RigidStage::applyRestitution(double threshold) {
-    cache_.store(contacts_); // the last substep's impulses, not restitution's one-off bounce
+    blocks_.unpack(contacts_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
+    cache_.store(contacts_);   // the last substep's impulses, not restitution's one-off bounce
     beforeBounce_ = states_;
     loadOthers();
     sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {

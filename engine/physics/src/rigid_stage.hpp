@@ -8,6 +8,7 @@
 #include "joint_stage.hpp"
 #include "pivot_joint.hpp"
 #include "rigid_colours.hpp"
+#include "rigid_contact_blocks.hpp"
 #include "rigid_pairs.hpp"
 #include "rigid_contacts.hpp"
 #include "rigid_warm_start.hpp"
@@ -122,6 +123,7 @@ private:
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)
     RigidColours colours_;
+    RigidBlocks blocks_; // the contacts as the substeps read them, packed at bind(), unpacked before restitution
     std::vector<int> reached_;
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;

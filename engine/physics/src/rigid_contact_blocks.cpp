@@ -1,0 +1,185 @@
+// The rigid contacts in blocks of four, lane by lane, and the passes over them (see rigid_contact_blocks.hpp).
+#include "rigid_contact_blocks.hpp"
+
+#include "rigid_contact_lanes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+// The vectors of the sweep never cross a call (rigid_contact_lanes.hpp): GCC's note on the AVX ABI is moot.
+#if defined(__GNUC__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
+namespace rube {
+
+namespace {
+
+void packLane(RigidBlock& k, int lane, const RigidContact& c, int index) {
+    k.normalX[lane] = c.normal.x;
+    k.normalY[lane] = c.normal.y;
+    k.tangentX[lane] = c.tangent.x;
+    k.tangentY[lane] = c.tangent.y;
+    k.friction[lane] = c.friction;
+    k.bodyA[lane] = c.bodyA;
+    k.bodyB[lane] = c.bodyB;
+    k.count[lane] = c.count;
+    k.contact[lane] = index;
+    k.againstFixed[lane] = c.againstFixed;
+    for (int j = 0; j < c.count; ++j) {
+        const RigidContactPoint& p = c.points[j];
+        RigidBlockPoint& q = k.points[j];
+        q.anchorAx[lane] = p.anchorA.x;
+        q.anchorAy[lane] = p.anchorA.y;
+        q.anchorBx[lane] = p.anchorB.x;
+        q.anchorBy[lane] = p.anchorB.y;
+        q.baseSeparation[lane] = p.baseSeparation;
+        q.normalMass[lane] = p.normalMass;
+        q.tangentMass[lane] = p.tangentMass;
+        q.normalImpulse[lane] = p.normalImpulse;
+        q.tangentImpulse[lane] = p.tangentImpulse;
+        q.deliveredNormal[lane] = p.deliveredNormal;
+        q.deliveredTangent[lane] = p.deliveredTangent;
+        q.maxNormalImpulse[lane] = p.maxNormalImpulse;
+    }
+}
+
+/// A lane filled with a stand-in: no points, no friction, both sides the block's first body (read,
+/// never written).
+void standIn(RigidBlock& k, int lane) {
+    k.bodyA[lane] = k.bodyB[lane] = k.bodyA[0];
+    k.count[lane] = 0;
+    k.contact[lane] = -1;
+}
+
+} // namespace
+
+void RigidBlocks::pack(std::span<const RigidContact> contacts, const RigidColours& colours) {
+    blocks_.clear();
+    for (int colour = 0; colour <= kRigidColours; ++colour) {
+        starts_[colour] = blocks_.size();
+        const int first = colours.start(colour), last = colours.start(colour + 1);
+        // The overflow's contacts may share bodies: one a block, solved one after the other.
+        const int step = colour < kRigidColours ? kBlockLanes : 1;
+        for (int i = first; i < last; i += step) {
+            RigidBlock& k = blocks_.emplace_back();
+            packLane(k, 0, contacts[static_cast<std::size_t>(i)], i);
+            for (int lane = 1; lane < kBlockLanes; ++lane) {
+                if (lane < step && i + lane < last)
+                    packLane(k, lane, contacts[static_cast<std::size_t>(i + lane)], i + lane);
+                else standIn(k, lane);
+            }
+        }
+    }
+    starts_[kRigidColours + 1] = blocks_.size();
+}
+
+void RigidBlocks::unpack(std::span<RigidContact> contacts) const {
+    for (const RigidBlock& k : blocks_)
+        for (int lane = 0; lane < kBlockLanes; ++lane) {
+            if (k.contact[lane] < 0) continue;
+            RigidContact& c = contacts[static_cast<std::size_t>(k.contact[lane])];
+            for (int j = 0; j < c.count; ++j) {
+                const RigidBlockPoint& q = k.points[j];
+                RigidContactPoint& p = c.points[j];
+                p.armA = {q.armAx[lane], q.armAy[lane]};
+                p.armB = {q.armBx[lane], q.armBy[lane]};
+                p.normalImpulse = q.normalImpulse[lane];
+                p.tangentImpulse = q.tangentImpulse[lane];
+                p.deliveredNormal = q.deliveredNormal[lane];
+                p.deliveredTangent = q.deliveredTangent[lane];
+                p.maxNormalImpulse = q.maxNormalImpulse[lane];
+            }
+        }
+}
+
+namespace {
+
+/// One pass over blocks, as the dispatch below hands it to the form compiled for the processor.
+struct Pass {
+    enum Kind { arms, approach, warmStart, solve } kind;
+    std::span<RigidBlock> blocks;
+    std::span<RigidState> bodies;
+    std::span<RigidContact> contacts = {};
+    int substep = 0;
+    const RigidContactSoftness* softness = nullptr;
+    double h = 0.0;
+    double maxTurn = 0.0;
+    bool useBias = false;
+};
+
+/// The pass over its blocks with vector V: a whole block at once, or half of it at a time.
+template <class V>
+[[gnu::always_inline]] inline void run(const Pass& pass) {
+    constexpr int W = kWidth<V>;
+    switch (pass.kind) {
+    case Pass::arms:
+        for (RigidBlock& k : pass.blocks)
+            for (int base = 0; base < kBlockLanes; base += W) refreshArmsOfSlice<V>(k, base, pass.bodies);
+        break;
+    case Pass::approach:
+        for (const RigidBlock& k : pass.blocks)
+            for (int base = 0; base < kBlockLanes; base += W)
+                measureApproachOfSlice<V>(k, base, pass.contacts, pass.bodies, pass.substep);
+        break;
+    case Pass::warmStart:
+        for (RigidBlock& k : pass.blocks)
+            for (int base = 0; base < kBlockLanes; base += W)
+                warmStartSlice<V>(k, base, pass.bodies, pass.h, pass.maxTurn);
+        break;
+    case Pass::solve: {
+        const double invH = 1.0 / pass.h;
+        for (RigidBlock& k : pass.blocks)
+            for (int base = 0; base < kBlockLanes; base += W)
+                solveSlice<V>(k, base, pass.bodies, *pass.softness, invH, pass.useBias);
+        break;
+    }
+    }
+}
+
+// Without AVX a block is run half at a time, two doubles a vector (SSE2 on x86-64): GCC splits a
+// vector wider than the target's into scalars wherever it compares or selects, and the whole pyramid
+// ran 1.6 x slower so.
+void runPortable(const Pass& pass) { run<HalfLanes>(pass); }
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// The same passes compiled for AVX, a whole block an instruction (no FMA, which AVX does not have).
+__attribute__((target("avx"))) void runAvx(const Pass& pass) { run<Lanes>(pass); }
+bool processorHasAvx() {
+    static const bool avx = __builtin_cpu_supports("avx"); // a CPUID flag, read once: never a clock
+    return avx;
+}
+#else
+void runAvx(const Pass& pass) { run<HalfLanes>(pass); }
+bool processorHasAvx() { return false; }
+#endif
+
+void dispatch(const Pass& pass, LaneCode code) {
+    if (code == LaneCode::best && processorHasAvx()) runAvx(pass);
+    else runPortable(pass);
+}
+
+} // namespace
+
+bool blocksRunAvx() { return processorHasAvx(); }
+
+void refreshBlockArms(std::span<RigidBlock> blocks, std::span<RigidState> bodies, LaneCode code) {
+    dispatch(Pass{Pass::arms, blocks, bodies}, code);
+}
+
+void measureBlockApproach(std::span<RigidBlock> blocks, std::span<RigidContact> contacts, std::span<RigidState> bodies,
+                          int substep, LaneCode code) {
+    dispatch(Pass{Pass::approach, blocks, bodies, contacts, substep}, code);
+}
+
+void warmStartBlocks(std::span<RigidBlock> blocks, std::span<RigidState> bodies, double h, double maxTurn,
+                     LaneCode code) {
+    dispatch(Pass{Pass::warmStart, blocks, bodies, {}, 0, nullptr, h, maxTurn}, code);
+}
+
+void solveBlocks(std::span<RigidBlock> blocks, std::span<RigidState> bodies, const RigidContactSoftness& softness,
+                 double h, bool useBias, LaneCode code) {
+    dispatch(Pass{Pass::solve, blocks, bodies, {}, 0, &softness, h, 0.0, useBias}, code);
+}
+
+} // namespace rube

@@ -30,8 +30,9 @@ using Lanes = double __attribute__((vector_size(kBlockLanes * sizeof(double)), a
 /// A lane-wise truth (all bits set or none): what the vectors' comparisons give.
 using LaneMask = decltype(Lanes{} < Lanes{});
 
-/// Point j of a block's contacts, lane by lane. A lane whose contact has fewer points holds zeros
-/// there, which the sweep computes on but never applies (its lanes are masked).
+/// Point j of a block's contacts, lane by lane. A lane whose contact has fewer points is packed with
+/// zeros there; the sweeps compute on it (and store what they get) but never apply it to a body, and
+/// nothing else reads it.
 struct RigidBlockPoint {
     Lanes anchorAx{}, anchorAy{}, anchorBx{}, anchorBy{}; ///< from each body's centre at the step's start
     Lanes armAx{}, armAy{}, armBx{}, armBy{};             ///< the anchors turned with their bodies this substep

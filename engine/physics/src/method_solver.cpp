@@ -88,6 +88,16 @@ public:
         cache_.remap(remap);
         rigid_.remapSlots(remap);
     }
+    // The rigid stage keeps contacts and warm starts between steps that a quiet step would have to
+    // renew as its full step does: worlds with rigid bodies or joints take the full step.
+    bool restsQuietly(const StepContext& ctx) const override { return ctx.bodies.empty() && ctx.joints.empty(); }
+    void restQuietly(StepContext& ctx) override {
+        // The full step of a world entirely asleep finds no contact (each needs an awake dynamic
+        // circle) and stores that none: warm starts begin afresh when something wakes. The rest it
+        // fills in is scratch, refilled at the start of each step.
+        hasRigid_ = false;
+        cache_.storeNone(static_cast<int>(ctx.circles.size()), static_cast<int>(ctx.segments.size()));
+    }
 
 private:
     void prepareBodies(const StepContext& ctx, double dt);

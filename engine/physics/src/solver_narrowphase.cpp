@@ -73,6 +73,11 @@ void ContactCache::store(std::span<const ContactConstraint> contacts, std::span<
     }
 }
 
+void ContactCache::storeNone(int circleCount, int segmentCount) {
+    if (other_.empty() && circleCount == circleCount_ && segmentCount == segmentCount_) return;
+    store({}, {}, circleCount, segmentCount);
+}
+
 void ContactCache::remap(const SlotRemap& remap) {
     const int oldCircles = static_cast<int>(remap.circles.to.size()),
               oldSegments = static_cast<int>(remap.segments.to.size());

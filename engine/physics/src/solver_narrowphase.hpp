@@ -31,6 +31,9 @@ public:
     /// friction impulses when `tangentImpulses` is parallel to them (empty: a step without friction).
     void store(std::span<const ContactConstraint> contacts, std::span<const double> tangentImpulses, int circleCount,
                int segmentCount);
+    /// As store with no contacts (a step of a world entirely asleep), without a pass over the circles
+    /// when it already holds none for these counts.
+    void storeNone(int circleCount, int segmentCount);
     /// Moves the stored pairs to the bodies' new slots, dropping those of bodies that left.
     void remap(const SlotRemap& remap);
 

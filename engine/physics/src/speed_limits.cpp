@@ -125,6 +125,13 @@ void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const W
                                                   b.inverseInertia > 0.0 ? spinLimit : 1e300);
 }
 
+void recordFinitePoses(std::span<const Circle> circles, std::span<const RigidBody> bodies, FiniteSnapshot& snapshot) {
+    snapshot.circlePositions.resize(circles.size());
+    snapshot.bodyPositions.resize(bodies.size());
+    snapshot.bodyAngles.resize(bodies.size());
+    recordPoses(circles, bodies, snapshot);
+}
+
 bool isolateNonFinite(std::span<Circle> circles, std::span<RigidBody> bodies, FiniteSnapshot& snapshot,
                       StepStats& stats, bool record) {
     const std::int64_t before = stats.isolatedBodies;

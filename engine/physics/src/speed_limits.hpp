@@ -25,6 +25,9 @@ bool clampRigidMotion(Vec2& velocity, double& omega, double speedLimit, double s
 /// solver sweeps, only past a runaway's speed). Call it after isolateNonFinite: it assumes finite states.
 void limitSpeeds(std::span<Circle> circles, std::span<RigidBody> bodies, const WorldDef& def, StepStats& stats);
 
+/// What isolateNonFinite records after a step, for a step that changed no state (World::stepQuietly).
+void recordFinitePoses(std::span<const Circle> circles, std::span<const RigidBody> bodies, FiniteSnapshot& snapshot);
+
 /// Freezes every body whose state is not finite: back where it was last finite, fixed (infinite
 /// mass, so no contact or rope moves it and it moves nothing by its own velocity), velocity and spin
 /// zero; counted in stats.isolatedBodies (the first one named) and stats.nonFinite set. With `record`

@@ -51,6 +51,11 @@ public:
     /// from step to step (warm starts, stints) follows them to their new slots (world_handles.hpp),
     /// so a world goes on as if what left had never been there.
     virtual void remapSlots(const SlotRemap&) {}
+    /// True when the method can take a step of a world entirely asleep and still (quiet_step.hpp)
+    /// as restQuietly, without its per-body passes: the solver in a world without rigid bodies or joints.
+    virtual bool restsQuietly(const StepContext&) const { return false; }
+    /// Such a step: changes in the method's own state only what its full step of that world would.
+    virtual void restQuietly(StepContext&) {}
 };
 
 std::unique_ptr<StepMethod> makeDiscreteMethod();

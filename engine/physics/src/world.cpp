@@ -3,6 +3,7 @@
 
 #include "field_pass.hpp"
 #include "kinematic_pose.hpp"
+#include "quiet_step.hpp"
 #include "rope_constraint.hpp"
 #include "solver_sleep.hpp"
 #include "speed_limits.hpp"
@@ -203,6 +204,7 @@ void World::moveKinematicBodies() {
 }
 
 void World::step() {
+    if (stepQuietly()) return;
     moveKinematicBodies();
     impacts_.clear();
     const double dt = def_.timeStep;
@@ -254,6 +256,59 @@ void World::step() {
     // The methods only translated turning segments: the frame between steps shows them turned.
     placeTurningSegments(segments_, paths_, time_);
     checkState();
+}
+
+// Issue 26: a world entirely asleep and still (quiet_step.hpp) is stepped without the passes below,
+// which would change nothing: no kinematic body to move, no field, drag or gravity scale acts on a
+// sleeper, every state is finite (nothing to isolate) and every dynamic speed is 0 (nothing to clamp),
+// and the method's step moves no sleeper (restQuietly renews what it keeps). The rope pass runs only
+// when some rope is not plainly within its length. Each step of a settled scene then costs one pass
+// that checks it.
+bool World::stepQuietly() {
+    const bool rigidWorld = !bodies_.empty() || !joints_.empty() || !ropes_.empty();
+    const bool sleeps = def_.sleepSpeed > 0.0 && method_->keepsSleep() && (!rigidWorld || method_->keepsRigidSleep());
+    if (!sleeps || !fields_.empty() || def_.airDrag.active()) return false;
+    const double dt = def_.timeStep;
+    const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
+    context.joints = joints_;
+    context.workers = workers_.get();
+    context.sleep = true;
+    if (!method_->restsQuietly(context)) return false;
+    const Stillness stillness = asleepAndStill(circles_, segments_, ropes_);
+    if (stillness == Stillness::moving) return false;
+    const bool ropesPull = stillness == Stillness::ropesToPull;
+    impacts_.clear();
+    mayHaveSleepers_ = true;
+    if (ropesPull) recordRopeStarts(circles_, ropes_, ropeStarts_);
+    method_->restQuietly(context);
+    if (ropesPull) enforceRopes(circles_, ropes_, ropeStarts_, impacts_, dt);
+    ++stats_.steps;
+    ++stats_.quietSteps;
+    time_ = static_cast<double>(stats_.steps) * dt;
+    // No segment follows a path (asleepAndStill): none to turn.
+    if (ropesPull) { // the rope pass may have put a sleeper back on its rope
+        checkState();
+        return true;
+    }
+    // What checkState does, less what cannot have changed: every state is finite as checked, and a
+    // sleeper has not moved since the step that last recorded its pose and checked its bounds
+    // (whatever moves one wakes it, and the records follow slots as bodies leave and enter:
+    // World::remapSlots).
+    if (!bodies_.empty() || finite_->circlePositions.size() != circles_.size())
+        recordFinitePoses(circles_, bodies_, *finite_);
+    Vec2* const recorded = finite_->circlePositions.data();
+    const std::size_t circleCount = circles_.size();
+    for (std::size_t i = 0; i < circleCount; ++i) {
+        const Circle& c = circles_[i];
+        if (c.sleep.asleep) continue;
+        recorded[i] = c.position;
+        if (!escaped_[i] && !def_.bounds.contains(c.position)) {
+            escaped_[i] = 1;
+            ++stats_.escapes;
+        }
+    }
+    return true;
 }
 
 void World::checkState() {

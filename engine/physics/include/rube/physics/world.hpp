@@ -113,6 +113,9 @@ struct StepStats {
     CircleId firstIsolatedCircle;            ///< the first isolated body when it is a circle, else null
     BodyId firstIsolatedBody;                ///< the first isolated body when it is a rigid body, else null
     int firstIsolatedSlot = -1; ///< its slot among the world's circles or bodies when isolated, -1 when none was
+    /// solver: steps of a world entirely asleep and still, which visited no body but to check that
+    /// (no ropes, fields, rigid bodies or joints need the full step; see World::step)
+    std::int64_t quietSteps = 0;
 };
 
 class StepMethod;
@@ -267,7 +270,9 @@ public:
     /// state is or becomes non-finite is frozen at its last finite pose with infinite mass, so it cannot
     /// corrupt the others, and reported (StepStats::isolatedBodies, nonFinite). Throws std::logic_error when the world
     /// has rigid bodies that turn (not fixed-rotation boxes), capsules or pivots, and its method is one that does not
-    /// model them (discrete, turn-based, exact): only solver and auto do.
+    /// model them (discrete, turn-based, exact): only solver and auto do. A solver world of circles,
+    /// segments and ropes that is entirely asleep and still takes the step without its per-body
+    /// passes, as they would change nothing (StepStats::quietSteps).
     void step();
     /// Switches the time-step method (for running any scene under every method).
     void setMethod(Method method);
@@ -295,6 +300,7 @@ public:
 
 private:
     void moveKinematicBodies();
+    bool stepQuietly();
     void checkState();
     void applyGravityScales(double dt);
     void nameFirstIsolated();

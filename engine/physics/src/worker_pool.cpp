@@ -36,11 +36,26 @@ T awaitChange(const std::atomic<T>& value, T seen) {
     }
 }
 
+/// Where thread t's share of n chunks begins: thread t of T has [n t / T, n (t + 1) / T).
+std::size_t shareStart(std::size_t chunks, int t, int threads) {
+    return chunks * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
+}
+
 } // namespace
 
-WorkerPool::WorkerPool(int workers) : workers_(workers) {
+WorkerPool::WorkerPool(int workers)
+    : workers_(workers), next_(static_cast<std::size_t>(kMaxPhases) * static_cast<std::size_t>(workers)) {
     threads_.reserve(static_cast<std::size_t>(workers - 1));
-    for (int w = 1; w < workers; ++w) threads_.emplace_back([this] { loop(); });
+    for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { loop(w); });
+}
+
+bool WorkerPool::claim(int p, int t, std::size_t& chunk) {
+    std::atomic<std::size_t>& next = next_[static_cast<std::size_t>(p * workers_ + t)].value;
+    const std::size_t end = shareStart(chunks_[p], t + 1, workers_);
+    // A relaxed load first, so a share already used up costs no write to its counter's line.
+    if (next.load(std::memory_order_relaxed) >= end) return false;
+    chunk = next.fetch_add(1, std::memory_order_relaxed);
+    return chunk < end;
 }
 
 WorkerPool::~WorkerPool() {
@@ -51,14 +66,18 @@ WorkerPool::~WorkerPool() {
     for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::work() {
+void WorkerPool::work(int self) {
     for (int p = 0; p < phases_; ++p) {
         const std::size_t chunks = chunks_[p];
-        for (std::size_t k = next_[p].value.fetch_add(1, std::memory_order_relaxed); k < chunks;
-             k = next_[p].value.fetch_add(1, std::memory_order_relaxed)) {
-            const std::size_t first = k * chunk_[p];
-            call_(work_, p, first, first + chunk_[p] < size_[p] ? first + chunk_[p] : size_[p]);
-            if (done_[p].value.fetch_add(1, std::memory_order_acq_rel) + 1 == chunks) done_[p].value.notify_all();
+        // The own share first, then the others' in turn.
+        for (int i = 0; i < workers_; ++i) {
+            const int t = (self + i) % workers_;
+            for (std::size_t k; claim(p, t, k);) {
+                const std::size_t first = k * chunk_[p];
+                call_(work_, p, first, first + chunk_[p] < size_[p] ? first + chunk_[p] : size_[p]);
+                if (done_[p].value.fetch_add(1, std::memory_order_acq_rel) + 1 == chunks)
+                    done_[p].value.notify_all();
+            }
         }
         // Every chunk is claimed: wait for the ones still being worked on.
         for (std::size_t done = done_[p].value.load(std::memory_order_acquire); done != chunks;)
@@ -74,25 +93,27 @@ void WorkerPool::dispatch(int phases, const std::size_t* sizes, const std::size_
         size_[p] = sizes[p];
         chunk_[p] = chunks[p];
         chunks_[p] = (sizes[p] + chunks[p] - 1) / chunks[p];
-        next_[p].value.store(0, std::memory_order_relaxed);
+        for (int t = 0; t < workers_; ++t)
+            next_[static_cast<std::size_t>(p * workers_ + t)].value.store(shareStart(chunks_[p], t, workers_),
+                                                                           std::memory_order_relaxed);
         done_[p].value.store(0, std::memory_order_relaxed);
     }
     const std::uint64_t generation = generation_.fetch_add(1, std::memory_order_seq_cst) + 1;
     generation_.notify_all();
-    this->work();
+    this->work(0);
     // Close the run, then wait only for the workers that joined it (seq_cst on both sides: a worker
     // either sees the run closed and leaves without touching it, or is counted here).
     closed_.store(generation, std::memory_order_seq_cst);
     for (int active = active_.load(std::memory_order_seq_cst); active != 0;) active = awaitChange(active_, active);
 }
 
-void WorkerPool::loop() {
+void WorkerPool::loop(int self) {
     std::uint64_t seen = 0;
     for (;;) {
         seen = awaitChange(generation_, seen);
         if (stop_.load(std::memory_order_acquire)) return;
         active_.fetch_add(1, std::memory_order_seq_cst);
-        if (closed_.load(std::memory_order_seq_cst) < seen) work();
+        if (closed_.load(std::memory_order_seq_cst) < seen) work(self);
         if (active_.fetch_sub(1, std::memory_order_seq_cst) == 1) active_.notify_all();
     }
 }

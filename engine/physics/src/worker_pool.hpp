@@ -1,8 +1,11 @@
 #pragma once
 // Internal: the World's worker threads (WorldDef::workers). A small persistent pool that runs work
-// in phases: each phase's items are cut into chunks of a fixed length, every thread (the caller
-// and the workers) claims chunks from a shared counter until none is left, and no thread starts
-// phase p + 1 before every chunk of phase p is done. Which thread does a chunk is left to chance,
+// in phases: each phase's items are cut into chunks of a fixed length, and no thread starts phase
+// p + 1 before every chunk of phase p is done. Each thread (the caller is thread 0) has a home
+// share of every phase's chunks, the same place in each, and claims chunks there first, then from
+// the others' shares until none is left: the rigid contacts of every colour are in body order, so
+// a thread keeps meeting the same bodies colour after colour and their cache lines stay with its
+// processor, where claiming anywhere sent them back and forth. Which thread does a chunk is left to chance,
 // so a chunk's result must not depend on it: the rigid solver hands out only work whose items
 // write disjoint slots (the contacts of one colour, one body each), which gives the same bits for
 // any split. A worker the machine has not scheduled holds nothing up: the others take its chunks,
@@ -46,8 +49,10 @@ public:
 private:
     using Call = void (*)(void*, int, std::size_t, std::size_t);
     void dispatch(int phases, const std::size_t* sizes, const std::size_t* chunks, Call call, void* work);
-    void work();
-    void loop();
+    void work(int self);
+    void loop(int self);
+    /// Claims the next chunk of phase p in thread t's share, or returns false when none is left there.
+    bool claim(int p, int t, std::size_t& chunk);
 
     int workers_;
     std::vector<std::thread> threads_;
@@ -59,8 +64,8 @@ private:
     struct alignas(64) Counter {
         std::atomic<std::size_t> value{0};
     };
-    Counter next_[kMaxPhases];                             // per phase: the next chunk to claim
-    Counter done_[kMaxPhases];                             // per phase: chunks finished
+    std::vector<Counter> next_;  // per phase and thread: the next chunk to claim in the thread's share
+    Counter done_[kMaxPhases];   // per phase: chunks finished
     alignas(64) std::atomic<std::uint64_t> generation_{0}; // bumped to publish a run
     std::atomic<std::uint64_t> closed_{0};                 // the last run whose chunks are all done
     std::atomic<int> active_{0};                           // workers inside a run

@@ -40,8 +40,8 @@ private:
     int starts_[kRigidColours + 2] = {};
 };
 
-/// Contacts in one worker's chunk of a colour: even, so the lanes keep their pairs; a colour of fewer
-/// than two chunks is not worth a hand-over (a contact costs about 40 ns, a hand-over about 1 us).
+/// Contacts in one worker's chunk of a colour (a whole number of blocks of four, sweepBlocks); a colour
+/// of fewer than two chunks is not worth a hand-over (a contact costs about 40 ns, a hand-over about 1 us).
 constexpr std::size_t kContactChunk = 32;
 
 /// Calls sweep(first, last) over the contacts [first, last) colour after colour, the overflow last

@@ -73,6 +73,7 @@ private:
 /// a colour's blocks share no movable body, so any split gives the same bits).
 template <class Sweep>
 void sweepBlocks(WorkerPool* pool, const RigidBlocks& blocks, Sweep sweep) {
+    static_assert(kContactChunk % kBlockLanes == 0, "a chunk is whole blocks");
     constexpr std::size_t kBlockChunk = kContactChunk / kBlockLanes;
     std::size_t sizes[kRigidColours + 1], chunks[kRigidColours + 1];
     bool shared = false;

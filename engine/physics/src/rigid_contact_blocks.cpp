@@ -15,6 +15,9 @@ namespace rube {
 
 namespace {
 
+/// Blocks in a worker's share of packing or unpacking (a block is about 30 copies).
+constexpr std::size_t kPackChunk = 64;
+
 void packLane(RigidBlock& k, int lane, const RigidContact& c, int index) {
     k.normalX[lane] = c.normal.x;
     k.normalY[lane] = c.normal.y;
@@ -54,43 +57,59 @@ void standIn(RigidBlock& k, int lane) {
 
 } // namespace
 
-void RigidBlocks::pack(std::span<const RigidContact> contacts, const RigidColours& colours) {
-    blocks_.clear();
+void RigidBlocks::pack(std::span<const RigidContact> contacts, const RigidColours& colours, WorkerPool* pool) {
+    // Where each colour's blocks begin, then every block filled on its own (any split, the same blocks).
+    // The overflow's contacts may share bodies: one a block, solved one after the other.
+    const auto step = [](int colour) { return colour < kRigidColours ? kBlockLanes : 1; };
+    std::size_t blocks = 0;
     for (int colour = 0; colour <= kRigidColours; ++colour) {
-        starts_[colour] = blocks_.size();
-        const int first = colours.start(colour), last = colours.start(colour + 1);
-        // The overflow's contacts may share bodies: one a block, solved one after the other.
-        const int step = colour < kRigidColours ? kBlockLanes : 1;
-        for (int i = first; i < last; i += step) {
-            RigidBlock& k = blocks_.emplace_back();
+        starts_[colour] = blocks;
+        const int size = colours.start(colour + 1) - colours.start(colour);
+        blocks += static_cast<std::size_t>((size + step(colour) - 1) / step(colour));
+    }
+    starts_[kRigidColours + 1] = blocks;
+    blocks_.resize(blocks);
+    forShares(pool, blocks, kPackChunk, [&](std::size_t first, std::size_t last) {
+        int colour = 0;
+        for (std::size_t b = first; b < last; ++b) {
+            while (starts_[colour + 1] <= b) ++colour;
+            const int lanes = step(colour);
+            const int i = colours.start(colour) + static_cast<int>(b - starts_[colour]) * lanes;
+            const int end = colours.start(colour + 1);
+            RigidBlock& k = blocks_[b];
+            k = RigidBlock{};
             packLane(k, 0, contacts[static_cast<std::size_t>(i)], i);
             for (int lane = 1; lane < kBlockLanes; ++lane) {
-                if (lane < step && i + lane < last)
+                if (lane < lanes && i + lane < end)
                     packLane(k, lane, contacts[static_cast<std::size_t>(i + lane)], i + lane);
                 else standIn(k, lane);
             }
         }
-    }
-    starts_[kRigidColours + 1] = blocks_.size();
+    });
 }
 
-void RigidBlocks::unpack(std::span<RigidContact> contacts) const {
-    for (const RigidBlock& k : blocks_)
-        for (int lane = 0; lane < kBlockLanes; ++lane) {
-            if (k.contact[lane] < 0) continue;
-            RigidContact& c = contacts[static_cast<std::size_t>(k.contact[lane])];
-            for (int j = 0; j < c.count; ++j) {
-                const RigidBlockPoint& q = k.points[j];
-                RigidContactPoint& p = c.points[j];
-                p.armA = {q.armAx[lane], q.armAy[lane]};
-                p.armB = {q.armBx[lane], q.armBy[lane]};
-                p.normalImpulse = q.normalImpulse[lane];
-                p.tangentImpulse = q.tangentImpulse[lane];
-                p.deliveredNormal = q.deliveredNormal[lane];
-                p.deliveredTangent = q.deliveredTangent[lane];
-                p.maxNormalImpulse = q.maxNormalImpulse[lane];
+void RigidBlocks::unpack(std::span<RigidContact> contacts, WorkerPool* pool) const {
+    // Each lane writes its own contact: any split gives the same list.
+    forShares(pool, blocks_.size(), kPackChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b) {
+            const RigidBlock& k = blocks_[b];
+            for (int lane = 0; lane < kBlockLanes; ++lane) {
+                if (k.contact[lane] < 0) continue;
+                RigidContact& c = contacts[static_cast<std::size_t>(k.contact[lane])];
+                for (int j = 0; j < c.count; ++j) {
+                    const RigidBlockPoint& q = k.points[j];
+                    RigidContactPoint& p = c.points[j];
+                    p.armA = {q.armAx[lane], q.armAy[lane]};
+                    p.armB = {q.armBx[lane], q.armBy[lane]};
+                    p.normalImpulse = q.normalImpulse[lane];
+                    p.tangentImpulse = q.tangentImpulse[lane];
+                    p.deliveredNormal = q.deliveredNormal[lane];
+                    p.deliveredTangent = q.deliveredTangent[lane];
+                    p.maxNormalImpulse = q.maxNormalImpulse[lane];
+                }
             }
         }
+    });
 }
 
 namespace {

@@ -55,10 +55,11 @@ struct RigidBlock {
 /// its own, so the overflow is solved one contact after the other as before.
 class RigidBlocks {
 public:
-    /// Packs `contacts`, coloured by `colours`, with their current impulses (the arms are refreshBlockArms').
-    void pack(std::span<const RigidContact> contacts, const RigidColours& colours);
+    /// Packs `contacts`, coloured by `colours`, with their current impulses (the arms are
+    /// refreshBlockArms'), the blocks shared among `pool`'s workers when given.
+    void pack(std::span<const RigidContact> contacts, const RigidColours& colours, WorkerPool* pool = nullptr);
     /// Writes the arms, impulses and what the points delivered back into `contacts` (the list packed).
-    void unpack(std::span<RigidContact> contacts) const;
+    void unpack(std::span<RigidContact> contacts, WorkerPool* pool = nullptr) const;
     /// Blocks [start(c), start(c + 1)) hold colour c; colour kRigidColours is the overflow.
     std::size_t start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
     std::span<RigidBlock> all() { return blocks_; }

@@ -301,7 +301,7 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
     }
     chooseSoftness(contacts_, states_);
     colours_.build(contacts_, states_);
-    blocks_.pack(contacts_, colours_);
+    blocks_.pack(contacts_, colours_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }
 
@@ -406,7 +406,7 @@ void RigidStage::integratePositions(double h) {
 }
 
 void RigidStage::applyRestitution(double threshold) {
-    blocks_.unpack(contacts_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
+    blocks_.unpack(contacts_, pool_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
     cache_.store(contacts_);   // the last substep's impulses, not restitution's one-off bounce
     beforeBounce_ = states_;
     loadOthers();

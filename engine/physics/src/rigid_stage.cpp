@@ -31,8 +31,8 @@ constexpr double kPivotDampingRatio = 2.0;
 /// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
 /// a body's update costs a few nanoseconds, a hand-over about a microsecond.
 constexpr std::size_t kBodyChunk = 256;
-/// Blocks of two contacts in a chunk of a per-contact loop (the approach measure, the arms).
-constexpr std::size_t kBlockLoopChunk = 32;
+/// Blocks (of four contacts) in a chunk of a per-block loop: the approach measure, the arms.
+constexpr std::size_t kBlockLoopChunk = 16;
 /// Candidate pairs in a chunk of the narrowphase (a manifold costs about 0.1 us).
 constexpr std::size_t kPairChunk = 64;
 /// A pair of joint ends as one number: rigid body i as i, circle c as -1 - c.

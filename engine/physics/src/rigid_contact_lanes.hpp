@@ -133,6 +133,15 @@ struct LaneBody {
     }
 };
 
+/// d . ((vB + omegaB x rB) - (vA + omegaA x rA)): how fast the contact point's sides part along d,
+/// as pointVelocity and Vec2::dot compute it, lane-wise.
+template <class V>
+[[gnu::always_inline]] inline V alongPoint(const LaneBody<V>& a, const LaneBody<V>& b, V rAx, V rAy, V rBx, V rBy, V dx,
+                                           V dy) {
+    return dx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
+           dy * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
+}
+
 /// refreshArms over a slice: rotate(q, r) = (q.x r.x - q.y r.y, q.y r.x + q.x r.y) lane-wise; a
 /// stand-in's zero anchors stay zero.
 template <class V>
@@ -176,8 +185,7 @@ template <class V>
         }
         if (!any) continue;
         const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
-        V vn = nx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
-               ny * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
+        V vn = alongPoint(a, b, rAx, rAy, rBx, rBy, nx, ny);
         const V ka = a.inverseInertia * (rAx * ny - rAy * nx), kb = b.inverseInertia * (rBx * ny - rBy * nx);
         for (int q = 0; q < s.count; ++q) {
             const RigidBlockPoint& o = k.points[q];
@@ -293,8 +301,7 @@ template <class V>
         bias = speculative ? gap * invHw : bias;
         const V massScale = speculative ? one : softMass;
         const V impulseScale = speculative ? zero : softImpulse;
-        const V vn = nx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
-                     ny * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
+        const V vn = alongPoint(a, b, rAx, rAy, rBx, rBy, nx, ny);
         const V old = at(p.normalImpulse);
         const V lambda = -at(p.normalMass) * massScale * (vn + bias) - impulseScale * old;
         const V total = maxOf(old + lambda, zero);
@@ -318,8 +325,7 @@ template <class V>
             }
             const MaskOf<V> has = maskOf<V>(on);
             const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
-            const V vt = tx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
-                         ty * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
+            const V vt = alongPoint(a, b, rAx, rAy, rBx, rBy, tx, ty);
             const V limit = friction * at(p.normalImpulse);
             const V old = at(p.tangentImpulse);
             const V total = minOf(maxOf(old - at(p.tangentMass) * vt, -limit), limit);

@@ -64,7 +64,10 @@ struct RigidContactSoftness {
     double maxPushSpeed = 3.0; ///< m/s: deep overlaps are pushed out no faster
 };
 
-/// The functions below act on the rigid stage's solver bodies, indexed by bodyA and bodyB.
+/// The functions below act on the rigid stage's solver bodies, indexed by bodyA and bodyB. The stage
+/// runs restitution as it is; warm starting, the approach measure, the arms and the sweep it runs in
+/// their block forms (rigid_contact_blocks.hpp), and these one-contact-at-a-time forms are what those
+/// must equal bit for bit (tests/rigid_lanes_test.cpp) and where their formulas are written out.
 
 /// Applies every point's last impulses again as the starting guess (warm starting). A contact whose
 /// body turns more than `maxTurn` radians in the substep of length h starts from zero instead: its

@@ -29,8 +29,8 @@ struct StepContext {
     std::span<const Joint> joints =
         {};             ///< the joints that act (the solver models them; auto gives their islands to it)
     WorkerPool* workers = nullptr; ///< the world's threads (WorldDef::workers); null runs everything here
-    bool sleep =
-        false; ///< islands may fall asleep this step (WorldDef::sleepSpeed, no ropes; rigid bodies: keepsRigidSleep)
+    bool sleep = false; ///< islands may fall asleep this step (WorldDef::sleepSpeed; rigid bodies, joints, ropes:
+                        ///< keepsRigidSleep)
 };
 
 /// A time-step method: advances every body over dt.

@@ -203,6 +203,25 @@ void World::moveKinematicBodies() {
     }
 }
 
+bool World::sleepsThisStep() const {
+    // Sleep is the solver's (auto's solver islands too); methods that move every body anyway keep
+    // every body awake. Rigid bodies, pivots, joints and ropes join the solver's islands
+    // (keepsRigidSleep: the solver and auto).
+    const bool rigidWorld = !bodies_.empty() || !joints_.empty() || !ropes_.empty();
+    return def_.sleepSpeed > 0.0 && method_->keepsSleep() && (!rigidWorld || method_->keepsRigidSleep());
+}
+
+StepContext World::stepContext() {
+    // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
+    // would register as a fresh impact every step.
+    const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed
+                                                   : 2.0 * def_.gravity.length() * def_.timeStep + 1e-3;
+    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
+    context.joints = joints_;
+    context.workers = workers_.get();
+    return context;
+}
+
 void World::step() {
     if (stepQuietly()) return;
     moveKinematicBodies();
@@ -213,9 +232,6 @@ void World::step() {
     if (def_.airDrag.active() || !fields_.empty())
         applyFields(circles_, fields_, tables_->thrusterSlots, def_.airDrag, def_.gravity, time_, dt);
     applyGravityScales(dt);
-    // The resting threshold must exceed the speed gravity adds in one step, or a resting ball
-    // would register as a fresh impact every step.
-    const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
     if (!joints_.empty()) requireJointMethod(def_.method, joints_, circles_, def_.gravity, !bodies_.empty());
     // Issue 27: a body made non-finite between steps (a field's kick, a caller) is frozen before it
@@ -223,14 +239,8 @@ void World::step() {
     const bool noneIsolated = stats_.isolatedBodies == 0;
     if (isolateNonFinite(circles_, bodies_, *finite_, stats_, false) && noneIsolated) nameFirstIsolated();
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
-    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
-    context.joints = joints_;
-    context.workers = workers_.get();
-    // Sleep is the solver's (auto's solver islands too); methods that move every body anyway keep
-    // every body awake. Rigid bodies, pivots, joints and ropes join the solver's islands
-    // (keepsRigidSleep: the solver and auto).
-    const bool rigidWorld = !bodies_.empty() || !joints_.empty() || !ropes_.empty();
-    context.sleep = def_.sleepSpeed > 0.0 && method_->keepsSleep() && (!rigidWorld || method_->keepsRigidSleep());
+    StepContext context = stepContext();
+    context.sleep = sleepsThisStep();
     // Only the solver puts bodies to sleep, so a world that never let it pays no pass to wake them.
     if (!context.sleep && mayHaveSleepers_) wakeAll(circles_, bodies_);
     mayHaveSleepers_ = context.sleep;
@@ -265,14 +275,9 @@ void World::step() {
 // when some rope is not plainly within its length. Each step of a settled scene then costs one pass
 // that checks it.
 bool World::stepQuietly() {
-    const bool rigidWorld = !bodies_.empty() || !joints_.empty() || !ropes_.empty();
-    const bool sleeps = def_.sleepSpeed > 0.0 && method_->keepsSleep() && (!rigidWorld || method_->keepsRigidSleep());
-    if (!sleeps || !fields_.empty() || def_.airDrag.active()) return false;
+    if (!sleepsThisStep() || !fields_.empty() || def_.airDrag.active()) return false;
     const double dt = def_.timeStep;
-    const double resting = def_.restingSpeed > 0.0 ? def_.restingSpeed : 2.0 * def_.gravity.length() * dt + 1e-3;
-    StepContext context{def_, circles_, segments_, bodies_, time_, resting, impacts_, stats_, pivots_, ropes_};
-    context.joints = joints_;
-    context.workers = workers_.get();
+    StepContext context = stepContext();
     context.sleep = true;
     if (!method_->restsQuietly(context)) return false;
     const Stillness stillness = asleepAndStill(circles_, segments_, ropes_);

@@ -119,6 +119,7 @@ struct StepStats {
 };
 
 class StepMethod;
+struct StepContext;
 struct RopeStart;
 struct FiniteSnapshot;
 struct WorldTables;
@@ -301,6 +302,10 @@ public:
 private:
     void moveKinematicBodies();
     bool stepQuietly();
+    /// Whether this step lets islands fall asleep (StepContext::sleep).
+    bool sleepsThisStep() const;
+    /// What the method is handed this step, its sleep flag left false.
+    StepContext stepContext();
     void checkState();
     void applyGravityScales(double dt);
     void nameFirstIsolated();

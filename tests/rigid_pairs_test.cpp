@@ -102,3 +102,43 @@ TEST_CASE("rigid broadphase: a pyramid's pairs are its neighbours, not n^2", "[r
     CHECK(pairs == bruteForce(rigid, none));
     CHECK(pairs.size() < 6 * rigid.size());
 }
+
+TEST_CASE("rigid broadphase: kept candidates give the brute-force pairs step after step", "[rigid_pairs]") {
+    // Boxes and circles that breathe and drift a little every step (as a resting pile's boxes do with
+    // their speed), with now and then one thrown far: each step's pairs must be the brute-force ones
+    // whether the grid was filed again or its candidates kept, and jitter alone must not refile it.
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::vector<BoundingBox> rigid, circles;
+    randomScene(rng, {120, 60, 6.0, false}, rigid, circles);
+    RigidPairFinder finder;
+    std::vector<RigidPair> pairs;
+    finder.find(rigid, circles, pairs);
+    const long long first = finder.refilings();
+    int mismatches = 0, throws = 0;
+    for (int step = 0; step < 200; ++step) {
+        const bool jitterOnly = step < 100;
+        for (auto* list : {&rigid, &circles})
+            for (BoundingBox& b : *list) {
+                const double side = std::max(b.max.x - b.min.x, b.max.y - b.min.y);
+                const Vec2 drift{1e-4 * side * unit(rng), 1e-4 * side * unit(rng)};
+                const double breathe = 1e-4 * side * unit(rng);
+                b = {b.min + drift - Vec2{breathe, breathe}, b.max + drift + Vec2{breathe, breathe}};
+            }
+        if (!jitterOnly && step % 7 == 0) {
+            BoundingBox& b = rigid[static_cast<std::size_t>(step) % rigid.size()];
+            const Vec2 jump{3.0 * unit(rng), 3.0 * unit(rng)};
+            b = {b.min + jump, b.max + jump};
+            ++throws;
+        }
+        finder.find(rigid, circles, pairs);
+        if (pairs != bruteForce(rigid, circles)) ++mismatches;
+        if (jitterOnly) {
+            INFO("step " << step);
+            CHECK(finder.refilings() == first);
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK(throws > 10);
+    CHECK(finder.refilings() > first); // the throws refiled it
+}

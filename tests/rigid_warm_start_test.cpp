@@ -88,6 +88,45 @@ TEST_CASE("a rigid contact point found again next step gets its impulses back", 
     }
 }
 
+TEST_CASE("rigid contacts stored colour by colour find their impulses again", "[rigid][warmstart]") {
+    // As the stage stores them: the list in key order (body by body, rigid others before circles),
+    // dealt into colours that each keep list order, a contact's two points in either feature order,
+    // some points not pushing. Every pushing point must get its own impulses back, however many colours.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> impulse(0.01, 3.0), unit(0.0, 1.0);
+    for (int colours = 1; colours <= 13; colours += 3) {
+        std::vector<RigidContact> list;
+        for (int a = 0; a < 50; ++a)
+            for (int other = 0; other < 4; ++other) {
+                const bool rigid = other < 2;
+                const std::uint32_t f0 = static_cast<std::uint32_t>(7 * a + other), f1 = f0 + 0x1000;
+                const bool swapped = unit(rng) < 0.5;
+                list.push_back(contact({a, true}, {rigid ? a + 1 + other : 3 * a + other, rigid},
+                                       {swapped ? f1 : f0, swapped ? f0 : f1},
+                                       {unit(rng) < 0.2 ? 0.0 : impulse(rng), impulse(rng)}));
+            }
+        std::vector<RigidContact> coloured;
+        for (int c = 0; c < colours; ++c)
+            for (std::size_t k = static_cast<std::size_t>(c); k < list.size(); k += static_cast<std::size_t>(colours))
+                coloured.push_back(list[k]);
+        RigidContactCache cache;
+        cache.store(coloured);
+        std::vector<RigidContact> next;
+        for (const RigidContact& c : list) next.push_back(fresh(c));
+        cache.apply(next);
+        int found = 0;
+        for (std::size_t k = 0; k < list.size(); ++k)
+            for (int j = 0; j < list[k].count; ++j) {
+                const RigidContactPoint &was = list[k].points[j], &now = next[k].points[j];
+                INFO("colours " << colours << ", contact " << k << ", point " << j);
+                CHECK(now.normalImpulse == was.normalImpulse);
+                CHECK(now.tangentImpulse == (was.normalImpulse > 0.0 ? was.tangentImpulse : 0.0));
+                found += now.carried ? 1 : 0;
+            }
+        CHECK(found > 300);
+    }
+}
+
 TEST_CASE("a rigid contact point of another pair or feature, or one that did not push, starts from zero",
           "[rigid][warmstart]") {
     RigidContactCache cache;

@@ -6,6 +6,12 @@
 // rather than n^2 box tests. The pairs come out sorted as the brute-force double loop visits them
 // (body, then the other rigid bodies by index, then the circles by index), so the contacts built from
 // them, and everything the solver does with those contacts, are bit-identical to the n^2 search's.
+//
+// Between steps the grid files each item by a fat box, its box grown by a margin (Box2D's fat
+// AABBs), and keeps the candidate pairs, those whose fat boxes share a cell. While every box stays
+// inside its fat box the candidates stand, and a step only tests them against the new boxes, in
+// order: a resting pyramid pays no filing and no sorting. An item whose box leaves its fat box is
+// given a new one, and the grid is filed again.
 
 #include "broadphase_grid.hpp"
 
@@ -26,7 +32,7 @@ struct RigidPair {
     friend bool operator==(const RigidPair&, const RigidPair&) = default;
 };
 
-/// The grid, kept between steps so its buffers are warm.
+/// The grid and its candidate pairs, kept between steps.
 class RigidPairFinder {
 public:
     /// Replaces `pairs` with every (rigid, rigid) and (rigid, circle) pair whose boxes overlap, once
@@ -34,7 +40,13 @@ public:
     void find(std::span<const BoundingBox> rigidBoxes, std::span<const BoundingBox> circleBoxes,
               std::vector<RigidPair>& pairs);
 
+    /// How many times find() has filed the grid again (a box left its fat box, or the items changed).
+    long long refilings() const { return refilings_; }
+
 private:
+    /// Files every item by its fat box and lists the candidate pairs, sorted, once each.
+    void file(int rigidCount);
+
     struct Entry {
         std::uint64_t cell; // the cell's key, column and row offset to be non-negative
         int item;           // rigid bodies first, then circles
@@ -42,9 +54,13 @@ private:
             return a.cell != b.cell ? a.cell < b.cell : a.item < b.item;
         }
     };
-    std::vector<BoundingBox> boxes_; // every item's box: rigid bodies, then circles
+    std::vector<BoundingBox> boxes_; // every item's box this step: rigid bodies, then circles
+    std::vector<BoundingBox> fat_;   // every item's fat box: holds its box, since the grid was filed
+    int rigidCount_ = -1;            // the rigid count the candidates were filed for
     std::vector<Entry> entries_;
-    std::vector<int> large_; // items whose box spans too many cells to file: tested against every item
+    std::vector<int> large_;              // items whose fat box spans too many cells to file: paired with every item
+    std::vector<RigidPair> candidates_;   // pairs whose fat boxes share a cell (or with a large item), sorted
+    long long refilings_ = 0;
 };
 
 } // namespace rube

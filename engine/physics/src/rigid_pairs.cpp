@@ -32,6 +32,26 @@ BoundingBox fatten(const BoundingBox& b) {
 
 } // namespace
 
+bool RigidPairFinder::Range::large() const {
+    return static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) > kMaxCellsPerItem;
+}
+
+RigidPairFinder::Range RigidPairFinder::rangeOf(const BoundingBox& b) const {
+    // Monotonic in the coordinate, so two boxes that overlap (share a point) share a cell.
+    const auto cell = [&](double x, double origin) {
+        return static_cast<std::int64_t>(std::floor((x - origin) * inverseCell_));
+    };
+    return {cell(b.min.x, origin_.x), cell(b.max.x, origin_.x), cell(b.min.y, origin_.y), cell(b.max.y, origin_.y)};
+}
+
+void RigidPairFinder::consider(int a, int b, int rigidCount, std::vector<RigidPair>& into) const {
+    // A pair lists the rigid body first; two circles never pair here (the circle solver's broadphase has them).
+    if (a > b) std::swap(a, b);
+    if (a >= rigidCount || a == b) return;
+    if (!fat_[static_cast<std::size_t>(a)].overlaps(fat_[static_cast<std::size_t>(b)])) return;
+    into.push_back({a, b});
+}
+
 void RigidPairFinder::find(std::span<const BoundingBox> rigidBoxes, std::span<const BoundingBox> circleBoxes,
                            std::vector<RigidPair>& pairs) {
     pairs.clear();
@@ -41,18 +61,20 @@ void RigidPairFinder::find(std::span<const BoundingBox> rigidBoxes, std::span<co
     boxes_.insert(boxes_.end(), circleBoxes.begin(), circleBoxes.end());
 
     // The candidates stand while every box is inside its fat box: a pair whose boxes overlap has fat
-    // boxes that overlap, and so was listed when the grid was filed.
-    bool refile = rigidCount != rigidCount_ || fat_.size() != boxes_.size();
-    if (refile) fat_.clear();
+    // boxes that overlap, and so was listed when its items were filed.
+    const bool changed = rigidCount != rigidCount_ || fat_.size() != boxes_.size();
+    if (changed) fat_.clear();
+    moved_.clear();
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
         if (i >= fat_.size()) {
             fat_.push_back(fatten(boxes_[i]));
         } else if (!holds(fat_[i], boxes_[i])) {
             fat_[i] = fatten(boxes_[i]);
-            refile = true;
+            moved_.push_back(static_cast<int>(i));
         }
     }
-    if (refile) file(rigidCount);
+    // A few items moved: only they are filed again; many (or new items): the whole grid, sized afresh.
+    if (changed || moved_.size() * 4 > boxes_.size() || (!moved_.empty() && !refile(rigidCount))) file(rigidCount);
 
     // The candidates in order, kept when their boxes overlap this step: the brute-force order.
     for (const RigidPair& p : candidates_)
@@ -77,47 +99,82 @@ void RigidPairFinder::file(int rigidCount) {
     }
     const double span = std::max(region.max.x - region.min.x, region.max.y - region.min.y);
     const double cell = std::max({side / count, span / kMaxCellsPerAxis, 1e-9});
-    const double inverse = 1.0 / cell;
-    // Monotonic in the coordinate, so two boxes that overlap (share a point) share a cell.
-    const auto column = [&](double x) { return static_cast<std::int64_t>(std::floor((x - region.min.x) * inverse)); };
-    const auto row = [&](double y) { return static_cast<std::int64_t>(std::floor((y - region.min.y) * inverse)); };
+    origin_ = region.min;
+    inverseCell_ = 1.0 / cell;
 
     entries_.clear();
     large_.clear();
+    ranges_.resize(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
-        const BoundingBox& b = fat_[static_cast<std::size_t>(i)];
-        const std::int64_t x0 = column(b.min.x), x1 = column(b.max.x), y0 = row(b.min.y), y1 = row(b.max.y);
-        if (static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) > kMaxCellsPerItem) {
+        const Range r = ranges_[static_cast<std::size_t>(i)] = rangeOf(fat_[static_cast<std::size_t>(i)]);
+        if (r.large()) {
             large_.push_back(i);
             continue;
         }
-        for (std::int64_t x = x0; x <= x1; ++x)
-            for (std::int64_t y = y0; y <= y1; ++y)
+        for (std::int64_t x = r.x0; x <= r.x1; ++x)
+            for (std::int64_t y = r.y0; y <= r.y1; ++y)
                 entries_.push_back({static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y), i});
     }
     std::sort(entries_.begin(), entries_.end());
 
-    // A pair lists the rigid body first; two circles never pair here (the circle solver's broadphase has them).
-    const auto consider = [&](int a, int b) {
-        if (a > b) std::swap(a, b);
-        if (a >= rigidCount || a == b) return;
-        if (!fat_[static_cast<std::size_t>(a)].overlaps(fat_[static_cast<std::size_t>(b)])) return;
-        candidates_.push_back({a, b});
-    };
     for (std::size_t begin = 0; begin < entries_.size();) {
         std::size_t end = begin + 1;
         while (end < entries_.size() && entries_[end].cell == entries_[begin].cell) ++end;
         // Items are sorted within the cell, so once the first is a circle the rest are too.
         for (std::size_t p = begin; p < end && entries_[p].item < rigidCount; ++p)
-            for (std::size_t q = p + 1; q < end; ++q) consider(entries_[p].item, entries_[q].item);
+            for (std::size_t q = p + 1; q < end; ++q)
+                consider(entries_[p].item, entries_[q].item, rigidCount, candidates_);
         begin = end;
     }
     for (const int l : large_)
-        for (int i = 0; i < count; ++i) consider(l, i);
+        for (int i = 0; i < count; ++i) consider(l, i, rigidCount, candidates_);
 
     // A pair filed in several shared cells (or met through two large items) is listed once.
     std::sort(candidates_.begin(), candidates_.end());
     candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+}
+
+bool RigidPairFinder::refile(int rigidCount) {
+    // Each moved item's cells, on the grid as filed: a large item pairs with everything, and a cell
+    // left of or below the origin has no key, so either asks for the whole grid again.
+    isMoved_.assign(fat_.size(), 0);
+    newEntries_.clear();
+    for (const int m : moved_) {
+        const Range was = ranges_[static_cast<std::size_t>(m)], now = rangeOf(fat_[static_cast<std::size_t>(m)]);
+        if (was.large() || now.large() || now.x0 < 0 || now.y0 < 0 || now.x1 >= kMaxCellsPerAxis ||
+            now.y1 >= kMaxCellsPerAxis)
+            return false;
+        ranges_[static_cast<std::size_t>(m)] = now;
+        isMoved_[static_cast<std::size_t>(m)] = 1;
+        for (std::int64_t x = now.x0; x <= now.x1; ++x)
+            for (std::int64_t y = now.y0; y <= now.y1; ++y)
+                newEntries_.push_back({static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y), m});
+    }
+    ++refilings_;
+    const auto moved = [&](int item) { return isMoved_[static_cast<std::size_t>(item)] != 0; };
+    // The entries: the moved items' old ones out, their new ones merged in (both sorted).
+    std::erase_if(entries_, [&](const Entry& e) { return moved(e.item); });
+    std::sort(newEntries_.begin(), newEntries_.end());
+    mergedEntries_.resize(entries_.size() + newEntries_.size());
+    std::merge(entries_.begin(), entries_.end(), newEntries_.begin(), newEntries_.end(), mergedEntries_.begin());
+    entries_.swap(mergedEntries_);
+    // The candidates: the moved items' pairs out, and their pairs in their new cells (and with the
+    // large items) merged in; a pair of two moved items is met from both, and kept once.
+    std::erase_if(candidates_, [&](const RigidPair& p) { return moved(p.body) || moved(p.other); });
+    newPairs_.clear();
+    for (const Entry& e : newEntries_) {
+        const auto first = std::lower_bound(entries_.begin(), entries_.end(), Entry{e.cell, -1});
+        for (auto it = first; it != entries_.end() && it->cell == e.cell; ++it)
+            if (it->item != e.item) consider(e.item, it->item, rigidCount, newPairs_);
+    }
+    for (const int m : moved_)
+        for (const int l : large_) consider(l, m, rigidCount, newPairs_);
+    std::sort(newPairs_.begin(), newPairs_.end());
+    newPairs_.erase(std::unique(newPairs_.begin(), newPairs_.end()), newPairs_.end());
+    mergedPairs_.resize(candidates_.size() + newPairs_.size());
+    std::merge(candidates_.begin(), candidates_.end(), newPairs_.begin(), newPairs_.end(), mergedPairs_.begin());
+    candidates_.swap(mergedPairs_);
+    return true;
 }
 
 } // namespace rube

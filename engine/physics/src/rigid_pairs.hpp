@@ -46,6 +46,18 @@ public:
 private:
     /// Files every item by its fat box and lists the candidate pairs, sorted, once each.
     void file(int rigidCount);
+    /// Files again only the items in `moved_`, whose fat boxes changed, on the grid as it stands;
+    /// false (nothing changed) when one of them is or was too large to file, or left the grid.
+    bool refile(int rigidCount);
+
+    /// The cells an item's fat box covers, on the grid of the last full filing.
+    struct Range {
+        std::int64_t x0, x1, y0, y1;
+        bool large() const;
+    };
+    Range rangeOf(const BoundingBox& b) const;
+    /// Lists (a, b) as a candidate when a is a rigid body and their fat boxes overlap.
+    void consider(int a, int b, int rigidCount, std::vector<RigidPair>& into) const;
 
     struct Entry {
         std::uint64_t cell; // the cell's key, column and row offset to be non-negative
@@ -61,6 +73,16 @@ private:
     std::vector<int> large_;              // items whose fat box spans too many cells to file: paired with every item
     std::vector<RigidPair> candidates_;   // pairs whose fat boxes share a cell (or with a large item), sorted
     long long refilings_ = 0;
+    // The grid of the last full filing: its origin and cell, and each item's cells.
+    Vec2 origin_;
+    double inverseCell_ = 0.0;
+    std::vector<Range> ranges_;
+    std::vector<int> moved_;            // items whose fat boxes changed this step
+    std::vector<std::uint8_t> isMoved_; // per item: in moved_
+    std::vector<Entry> newEntries_;
+    std::vector<RigidPair> newPairs_;
+    std::vector<Entry> mergedEntries_;
+    std::vector<RigidPair> mergedPairs_;
 };
 
 } // namespace rube

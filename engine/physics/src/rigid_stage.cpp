@@ -71,26 +71,29 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     reach_.resize(n);
     shapes_.resize(n);
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
-    for (std::size_t i = 0; i < n; ++i) {
-        const RigidBody& b = ctx.bodies[i];
-        // An asleep body is fixed for the step: no gravity, and contacts only with awake bodies (which wake it).
-        const bool dynamic = b.motion == Motion::dynamic && b.inverseMass > 0.0 && !b.sleep.asleep;
-        RigidState& s = states_[i];
-        s = RigidState{};
-        s.velocity = b.motion == Motion::fixed ? Vec2{} : b.velocity;
-        s.omega = b.motion == Motion::fixed || b.fixedRotation ? 0.0 : b.angularVelocity;
-        s.inverseMass = dynamic ? b.inverseMass : 0.0;
-        s.inverseInertia = dynamic && !b.fixedRotation ? b.inverseInertia : 0.0;
-        startPosition_[i] = b.position;
-        startAngle_[i] = b.angle;
-        thickness_[i] = b.shape == BodyShape::box ? std::min(b.halfExtents.x, b.halfExtents.y) : b.halfExtents.y;
-        startVelocity_[i] = s.velocity;
-        startOmega_[i] = s.omega;
-        // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
-        reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * boundingRadius(b)) * dt +
-                    (dynamic ? gravityTravel : 0.0);
-        shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
-    }
+    // Each body's own slots only: any split among the workers gives the same states and shapes.
+    forShares(pool_, n, kBodyChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+            const RigidBody& b = ctx.bodies[i];
+            // An asleep body is fixed for the step: no gravity, and contacts only with awake bodies (which wake it).
+            const bool dynamic = b.motion == Motion::dynamic && b.inverseMass > 0.0 && !b.sleep.asleep;
+            RigidState& s = states_[i];
+            s = RigidState{};
+            s.velocity = b.motion == Motion::fixed ? Vec2{} : b.velocity;
+            s.omega = b.motion == Motion::fixed || b.fixedRotation ? 0.0 : b.angularVelocity;
+            s.inverseMass = dynamic ? b.inverseMass : 0.0;
+            s.inverseInertia = dynamic && !b.fixedRotation ? b.inverseInertia : 0.0;
+            startPosition_[i] = b.position;
+            startAngle_[i] = b.angle;
+            thickness_[i] = b.shape == BodyShape::box ? std::min(b.halfExtents.x, b.halfExtents.y) : b.halfExtents.y;
+            startVelocity_[i] = s.velocity;
+            startOmega_[i] = s.omega;
+            // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
+            reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * boundingRadius(b)) * dt +
+                        (dynamic ? gravityTravel : 0.0);
+            shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
+        }
+    });
     const double h = dt / std::max(1, ctx.def.substeps);
     substep_ = 0;
     substepTime_ = h;
@@ -141,13 +144,21 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         const std::int64_t x = a.rigid ? a.index : -1 - a.index, y = b.rigid ? b.index : -1 - b.index;
         return std::binary_search(connected_.begin(), connected_.end(), std::min(x, y) * kPairBase + std::max(x, y));
     };
+    const auto made = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
+                          const Material& mb) {
+        return makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
+                                ma.bounciness * mb.bounciness);
+    };
+    // A contact made (in list order): its sides get their solver bodies here, one after the other.
+    const auto append = [&](const RigidContact& c) {
+        contacts_.push_back(c);
+        contacts_.back().bodyA = solverBodyOf(c.a);
+        contacts_.back().bodyB = solverBodyOf(c.b);
+    };
     const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
                          const Material& mb) {
         if (m.count == 0) return; // tied pairs were given no manifold (below)
-        contacts_.push_back(makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
-                                             ma.bounciness * mb.bounciness));
-        contacts_.back().bodyA = solverBodyOf(a);
-        contacts_.back().bodyB = solverBodyOf(b);
+        append(made(a, b, centreA, centreB, m, ma, mb));
     };
     // Sleepers: a contact with an awake body, or a moving kinematic body's box, reaches them.
     const auto asleep = [&](std::size_t i) { return bodies[i].sleep.asleep; };
@@ -190,7 +201,9 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         const Circle& circle = ctx.circles[c];
         return circle.motion == Motion::dynamic && circle.inverseMass > 0.0 && !circleAsleep(c);
     };
+    // Each pair's contact is made there too (its effective masses read only the states and the stand-ins).
     manifolds_.resize(pairs_.size());
+    made_.resize(pairs_.size());
     forShares(pool_, pairs_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
         for (std::size_t k = first; k < last; ++k) {
             const auto i = static_cast<std::size_t>(pairs_[k].body), other = static_cast<std::size_t>(pairs_[k].other);
@@ -198,12 +211,20 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             m.count = 0;
             const BodySide side{static_cast<int>(i), true};
             if (other < n) {
-                if ((isDynamic(i) || isDynamic(other)) && !tied(side, {static_cast<int>(other), true}))
+                const BodySide otherSide{static_cast<int>(other), true};
+                if ((isDynamic(i) || isDynamic(other)) && !tied(side, otherSide)) {
                     m = collideRoundedPolygons(shapes_[i], shapes_[other], reach_[i] + reach_[other]);
-            } else if ((isDynamic(i) || circleDynamic(other - n)) &&
-                       !tied(side, {static_cast<int>(other - n), false})) {
-                m = collideRoundedPolygons(shapes_[i], makeRoundedPolygon(ctx.circles[other - n]),
-                                           reach_[i] + circleReach_[other - n]);
+                    if (m.count != 0)
+                        made_[k] = made(side, otherSide, bodies[i].position, bodies[other].position, m,
+                                        bodies[i].material, bodies[other].material);
+                }
+            } else if (const BodySide circleSide{static_cast<int>(other - n), false};
+                       (isDynamic(i) || circleDynamic(other - n)) && !tied(side, circleSide)) {
+                const Circle& circle = ctx.circles[other - n];
+                m = collideRoundedPolygons(shapes_[i], makeRoundedPolygon(circle), reach_[i] + circleReach_[other - n]);
+                if (m.count != 0)
+                    made_[k] = made(side, circleSide, bodies[i].position, circle.position, m, bodies[i].material,
+                                    circle.material);
             }
         }
     });
@@ -224,10 +245,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                         reached_.push_back(-1 - static_cast<int>(j));
                     continue;
                 }
-                const std::size_t before = contacts_.size();
-                add(side, {static_cast<int>(j), true}, bi.position, bodies[j].position, manifolds_[next], bi.material,
-                    bodies[j].material);
-                if (contacts_.size() == before) continue;
+                if (manifolds_[next].count == 0) continue;
+                append(made_[next]);
                 if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
                 if (asleep(j)) reached_.push_back(-1 - static_cast<int>(j));
                 continue;
@@ -241,10 +260,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                     reached_.push_back(static_cast<int>(c));
                 continue;
             }
-            const std::size_t before = contacts_.size();
-            add(side, {static_cast<int>(c), false}, bi.position, circle.position, manifolds_[next], bi.material,
-                circle.material);
-            if (contacts_.size() == before) continue;
+            if (manifolds_[next].count == 0) continue;
+            append(made_[next]);
             if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
             if (circleAsleep(c)) reached_.push_back(static_cast<int>(c));
         }

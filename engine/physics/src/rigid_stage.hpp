@@ -119,6 +119,7 @@ private:
     RigidPairFinder pairFinder_;
     std::vector<RigidPair> pairs_;
     std::vector<Manifold> manifolds_; // per pair of pairs_: its manifold (none when neither side moves)
+    std::vector<RigidContact> made_;  // per pair of pairs_ with a manifold: its contact, made by the narrowphase
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)

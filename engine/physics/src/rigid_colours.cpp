@@ -5,7 +5,7 @@
 
 namespace rube {
 
-void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies) {
+void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool) {
     used_.assign(bodies.size(), 0u);
     colour_.resize(contacts.size());
     int count[kRigidColours + 1] = {};
@@ -27,9 +27,13 @@ void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const Ri
     for (int c = 0; c <= kRigidColours; ++c) starts_[c + 1] = starts_[c] + count[c];
     int next[kRigidColours + 1];
     for (int c = 0; c <= kRigidColours; ++c) next[c] = starts_[c];
+    to_.resize(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k) to_[k] = next[colour_[k]]++;
+    // The contacts themselves (a few hundred bytes each) are moved by the workers, each to its own place.
     sorted_.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-        sorted_[static_cast<std::size_t>(next[colour_[k]]++)] = contacts[k];
+    forShares(pool, contacts.size(), kContactChunk * 2, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) sorted_[static_cast<std::size_t>(to_[k])] = contacts[k];
+    });
     contacts.swap(sorted_);
 }
 

@@ -26,7 +26,7 @@ public:
     /// fixed, static and asleep bodies do not count. One that fits none of kRigidColours goes to
     /// the overflow colour. Within a colour the contacts keep their list order, so the result
     /// depends on nothing but the list.
-    void build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies);
+    void build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool = nullptr);
     /// Contacts [start(c), start(c + 1)) have colour c; colour kRigidColours is the overflow.
     int start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
 
@@ -36,6 +36,7 @@ public:
 private:
     std::vector<std::uint32_t> used_; // per body: the colours that hold a contact of it
     std::vector<std::uint8_t> colour_;
+    std::vector<int> to_; // per contact in list order: its place in colour order
     std::vector<RigidContact> sorted_;
     int starts_[kRigidColours + 2] = {};
 };

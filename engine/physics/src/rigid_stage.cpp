@@ -103,14 +103,15 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
     findContacts(ctx, dt);
     states_.resize(rigidCount_ + otherBody_.size()); // the listed circles and segments: filled at bind()
-    cache_.apply(contacts_);
+    cache_.apply(contacts_, pool_);
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
     // Joints are as stiff as pivots (the same softness).
     joints_.prepare(ctx, h, pivotSoftness_);
 }
 
 void RigidStage::findContacts(const StepContext& ctx, double dt) {
-    contacts_.clear();
+    listed_.clear();
+    madeBySegment_.clear();
     reached_.clear();
     states_.resize(rigidCount_);
     otherBody_.clear();
@@ -149,16 +150,17 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         return makeRigidContact(massView, a, b, centreA, centreB, m, ma.friction * mb.friction,
                                 ma.bounciness * mb.bounciness);
     };
-    // A contact made (in list order): its sides get their solver bodies here, one after the other.
-    const auto append = [&](const RigidContact& c) {
-        contacts_.push_back(c);
-        contacts_.back().bodyA = solverBodyOf(c.a);
-        contacts_.back().bodyB = solverBodyOf(c.b);
+    // A contact listed (in list order): its sides get their solver bodies here, one after the other,
+    // and it is copied into the list afterwards, by the workers. `source` is its pair's slot in made_,
+    // or -1 - its slot in madeBySegment_.
+    const auto append = [&](int source, BodySide a, BodySide b) {
+        listed_.push_back({source, solverBodyOf(a), solverBodyOf(b)});
     };
     const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
                          const Material& mb) {
         if (m.count == 0) return; // tied pairs were given no manifold (below)
-        append(made(a, b, centreA, centreB, m, ma, mb));
+        madeBySegment_.push_back(made(a, b, centreA, centreB, m, ma, mb));
+        append(-static_cast<int>(madeBySegment_.size()), a, b);
     };
     // Sleepers: a contact with an awake body, or a moving kinematic body's box, reaches them.
     const auto asleep = [&](std::size_t i) { return bodies[i].sleep.asleep; };
@@ -179,6 +181,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     // Model no more than the scene needs: with every body asleep or fixed, no pair can act or wake
     // anything but a moving kinematic segment (below), so a sleeping scene pays no pair search.
     if (!anyAwake) {
+        contacts_.clear();
         if (anyAsleep) reachBySegments(ctx, dt);
         return;
     }
@@ -246,7 +249,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                     continue;
                 }
                 if (manifolds_[next].count == 0) continue;
-                append(made_[next]);
+                append(static_cast<int>(next), side, {static_cast<int>(j), true});
                 if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
                 if (asleep(j)) reached_.push_back(-1 - static_cast<int>(j));
                 continue;
@@ -261,7 +264,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                 continue;
             }
             if (manifolds_[next].count == 0) continue;
-            append(made_[next]);
+            append(static_cast<int>(next), side, {static_cast<int>(c), false});
             if (asleep(i)) reached_.push_back(-1 - static_cast<int>(i));
             if (circleAsleep(c)) reached_.push_back(static_cast<int>(c));
         }
@@ -276,6 +279,19 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                 collideRoundedPolygons(shapes_[i], shape, reach_[i] + reach), bi.material, seg.material);
         }
     }
+    // The list, each contact copied from where it was made (the slots in the list are kept between
+    // steps, so a list as long as the last costs no construction).
+    contacts_.resize(listed_.size());
+    forShares(pool_, listed_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            const Listed& l = listed_[k];
+            RigidContact& c = contacts_[k];
+            c = l.source >= 0 ? made_[static_cast<std::size_t>(l.source)]
+                              : madeBySegment_[static_cast<std::size_t>(-1 - l.source)];
+            c.bodyA = l.bodyA;
+            c.bodyB = l.bodyB;
+        }
+    });
     if (anyAsleep) reachBySegments(ctx, dt);
 }
 
@@ -317,7 +333,7 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
         if (movable && !omega.empty()) s.inverseInertia = c.inverseInertia;
     }
     chooseSoftness(contacts_, states_);
-    colours_.build(contacts_, states_);
+    colours_.build(contacts_, states_, pool_);
     blocks_.pack(contacts_, colours_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }

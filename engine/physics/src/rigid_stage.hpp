@@ -120,6 +120,12 @@ private:
     std::vector<RigidPair> pairs_;
     std::vector<Manifold> manifolds_; // per pair of pairs_: its manifold (none when neither side moves)
     std::vector<RigidContact> made_;  // per pair of pairs_ with a manifold: its contact, made by the narrowphase
+    std::vector<RigidContact> madeBySegment_; // the contacts with segments, in list order
+    struct Listed {
+        int source;       // the contact's slot in made_, or -1 - its slot in madeBySegment_
+        int bodyA, bodyB; // its sides' solver bodies
+    };
+    std::vector<Listed> listed_;     // the step's contacts in list order, before they are copied into contacts_
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)

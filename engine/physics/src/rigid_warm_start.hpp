@@ -7,6 +7,7 @@
 
 #include "rigid_contacts.hpp"
 #include "world_handles.hpp"
+#include "worker_pool.hpp"
 
 #include <cstdint>
 #include <span>
@@ -18,13 +19,15 @@ namespace rube {
 class RigidContactCache {
 public:
     /// Gives each point found in the cache its impulses back and marks it carried (when it pushed).
-    void apply(std::span<RigidContact> contacts) const;
+    void apply(std::span<RigidContact> contacts, WorkerPool* pool = nullptr) const;
     /// Remembers every point's impulses at the end of the step's substeps (before restitution).
     void store(std::span<const RigidContact> contacts);
     /// Moves the stored points to their bodies' new slots, dropping those of bodies that left.
     void remap(const SlotRemap& remap);
 
 private:
+    void applyTo(std::span<RigidContact> contacts) const;
+
     struct Entry {
         std::uint64_t pair = 0;    ///< side A's index, side B's kind and index
         std::uint32_t feature = 0; ///< the manifold point's id

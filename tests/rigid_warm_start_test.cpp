@@ -94,7 +94,7 @@ TEST_CASE("rigid contacts stored colour by colour find their impulses again", "[
     // some points not pushing. Every pushing point must get its own impulses back, however many colours.
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> impulse(0.01, 3.0), unit(0.0, 1.0);
-    for (int colours = 1; colours <= 13; colours += 3) {
+    for (int colours = 1; colours <= 14; ++colours) {
         std::vector<RigidContact> list;
         for (int a = 0; a < 50; ++a)
             for (int other = 0; other < 4; ++other) {
@@ -106,11 +106,17 @@ TEST_CASE("rigid contacts stored colour by colour find their impulses again", "[
                                        {unit(rng) < 0.2 ? 0.0 : impulse(rng), impulse(rng)}));
             }
         std::vector<RigidContact> coloured;
+        std::vector<int> place(list.size());
         for (int c = 0; c < colours; ++c)
-            for (std::size_t k = static_cast<std::size_t>(c); k < list.size(); k += static_cast<std::size_t>(colours))
+            for (std::size_t k = static_cast<std::size_t>(c); k < list.size(); k += static_cast<std::size_t>(colours)) {
+                place[k] = static_cast<int>(coloured.size());
                 coloured.push_back(list[k]);
+            }
+        // Stored as the stage stores them (visiting the list's order through `place`), and without it.
+        const bool withPlaces = colours % 2 == 1;
         RigidContactCache cache;
-        cache.store(coloured);
+        if (withPlaces) cache.store(coloured, place);
+        else cache.store(coloured);
         std::vector<RigidContact> next;
         for (const RigidContact& c : list) next.push_back(fresh(c));
         cache.apply(next);

@@ -30,6 +30,9 @@ public:
     /// Contacts [start(c), start(c + 1)) have colour c; colour kRigidColours is the overflow.
     int start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
 
+    /// Per contact of the list as given to build(): its place in colour order.
+    std::span<const int> placeOfListed() const { return to_; }
+
     /// Contacts in the overflow colour, solved one by one after the others.
     int overflow() const { return starts_[kRigidColours + 1] - starts_[kRigidColours]; }
 

@@ -440,7 +440,7 @@ void RigidStage::integratePositions(double h) {
 
 void RigidStage::applyRestitution(double threshold) {
     blocks_.unpack(contacts_, pool_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
-    cache_.store(contacts_);   // the last substep's impulses, not restitution's one-off bounce
+    cache_.store(contacts_, colours_.placeOfListed()); // the last substep's impulses, not restitution's bounce
     beforeBounce_ = states_;
     loadOthers();
     sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {

@@ -82,18 +82,21 @@ void RigidContactCache::remap(const SlotRemap& remap) {
     });
 }
 
-void RigidContactCache::store(std::span<const RigidContact> contacts) {
-    // The contacts come colour by colour, each colour in list order, and the list is in key order
-    // (RigidStage::findContacts: body by body, the others by index), so the entries are a few ascending
-    // runs: merged, they are what a sort gives, at a fraction of its cost. A contact's points are put
-    // in feature order first. Should two entries share a key, a sort decides their order as it always
-    // did, so warm starting never depends on the merge.
+void RigidContactCache::store(std::span<const RigidContact> contacts, std::span<const int> listOrder) {
+    // Visited in list order (contacts[listOrder[k]]), which is key order (RigidStage::findContacts:
+    // body by body, the others by index), the entries are one ascending run; visited colour by colour,
+    // each colour in list order, a few. Merged, the runs are what a sort gives, at a fraction of its
+    // cost. A contact's points are put in feature order first. Should two entries share a key, a sort
+    // of the entries in the contacts' own order decides as it always did, so warm starting never
+    // depends on the merge.
     const auto less = [](const Entry& a, const Entry& b) {
         return std::make_tuple(a.pair, a.feature) < std::make_tuple(b.pair, b.feature);
     };
     entries_.clear();
     runs_.clear();
-    for (const RigidContact& c : contacts) {
+    const bool listed = !listOrder.empty() && listOrder.size() == contacts.size();
+    for (std::size_t visit = 0; visit < contacts.size(); ++visit) {
+        const RigidContact& c = contacts[listed ? static_cast<std::size_t>(listOrder[visit]) : visit];
         const std::uint64_t pair = pairKey(c);
         const std::size_t first = entries_.size();
         for (int k = 0; k < c.count; ++k) {

@@ -21,7 +21,9 @@ public:
     /// Gives each point found in the cache its impulses back and marks it carried (when it pushed).
     void apply(std::span<RigidContact> contacts, WorkerPool* pool = nullptr) const;
     /// Remembers every point's impulses at the end of the step's substeps (before restitution).
-    void store(std::span<const RigidContact> contacts);
+    /// `listOrder`, when given, is where each contact of the list (in key order) now stands in
+    /// `contacts`: visited so, the entries need no sorting.
+    void store(std::span<const RigidContact> contacts, std::span<const int> listOrder = {});
     /// Moves the stored points to their bodies' new slots, dropping those of bodies that left.
     void remap(const SlotRemap& remap);
 

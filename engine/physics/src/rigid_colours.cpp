@@ -6,12 +6,24 @@
 namespace rube {
 
 void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool) {
+    ends_.resize(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k) ends_[k] = {contacts[k].bodyA, contacts[k].bodyB};
+    assign(ends_, bodies);
+    // The contacts themselves (a few hundred bytes each) are moved by the workers, each to its own place.
+    sorted_.resize(contacts.size());
+    forShares(pool, contacts.size(), kContactChunk * 2, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) sorted_[static_cast<std::size_t>(to_[k])] = contacts[k];
+    });
+    contacts.swap(sorted_);
+}
+
+void RigidColours::assign(std::span<const RigidContactEnds> ends, std::span<const RigidState> bodies) {
     used_.assign(bodies.size(), 0u);
-    colour_.resize(contacts.size());
+    colour_.resize(ends.size());
     int count[kRigidColours + 1] = {};
     constexpr std::uint32_t kAll = (1u << kRigidColours) - 1u;
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        const auto a = static_cast<std::size_t>(contacts[k].bodyA), b = static_cast<std::size_t>(contacts[k].bodyB);
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+        const auto a = static_cast<std::size_t>(ends[k].bodyA), b = static_cast<std::size_t>(ends[k].bodyB);
         const bool movesA = bodies[a].inverseMass > 0.0, movesB = bodies[b].inverseMass > 0.0;
         const std::uint32_t taken = (movesA ? used_[a] : 0u) | (movesB ? used_[b] : 0u);
         const std::uint32_t free = ~taken & kAll;
@@ -27,14 +39,8 @@ void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const Ri
     for (int c = 0; c <= kRigidColours; ++c) starts_[c + 1] = starts_[c] + count[c];
     int next[kRigidColours + 1];
     for (int c = 0; c <= kRigidColours; ++c) next[c] = starts_[c];
-    to_.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k) to_[k] = next[colour_[k]]++;
-    // The contacts themselves (a few hundred bytes each) are moved by the workers, each to its own place.
-    sorted_.resize(contacts.size());
-    forShares(pool, contacts.size(), kContactChunk * 2, [&](std::size_t first, std::size_t last) {
-        for (std::size_t k = first; k < last; ++k) sorted_[static_cast<std::size_t>(to_[k])] = contacts[k];
-    });
-    contacts.swap(sorted_);
+    to_.resize(ends.size());
+    for (std::size_t k = 0; k < ends.size(); ++k) to_[k] = next[colour_[k]]++;
 }
 
 } // namespace rube

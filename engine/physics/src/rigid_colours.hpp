@@ -15,6 +15,11 @@
 
 namespace rube {
 
+/// A contact's two solver bodies: all the colouring reads of it.
+struct RigidContactEnds {
+    int bodyA = 0, bodyB = 0;
+};
+
 /// Colours a contact may take before it goes to the overflow, which is solved last in list order.
 constexpr int kRigidColours = 12;
 
@@ -27,6 +32,9 @@ public:
     /// the overflow colour. Within a colour the contacts keep their list order, so the result
     /// depends on nothing but the list.
     void build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool = nullptr);
+    /// The same colours for contacts known by their solver bodies alone (ends[k] of the k-th in list
+    /// order), without moving anything: the k-th goes to placeOfListed()[k].
+    void assign(std::span<const RigidContactEnds> ends, std::span<const RigidState> bodies);
     /// Contacts [start(c), start(c + 1)) have colour c; colour kRigidColours is the overflow.
     int start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
 
@@ -41,6 +49,7 @@ private:
     std::vector<std::uint8_t> colour_;
     std::vector<int> to_; // per contact in list order: its place in colour order
     std::vector<RigidContact> sorted_;
+    std::vector<RigidContactEnds> ends_;
     int starts_[kRigidColours + 2] = {};
 };
 

@@ -103,7 +103,6 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
     findContacts(ctx, dt);
     states_.resize(rigidCount_ + otherBody_.size()); // the listed circles and segments: filled at bind()
-    cache_.apply(contacts_, pool_);
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
     // Joints are as stiff as pivots (the same softness).
     joints_.prepare(ctx, h, pivotSoftness_);
@@ -111,6 +110,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
 
 void RigidStage::findContacts(const StepContext& ctx, double dt) {
     listed_.clear();
+    listedEnds_.clear();
     madeBySegment_.clear();
     reached_.clear();
     states_.resize(rigidCount_);
@@ -154,7 +154,8 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     // and it is copied into the list afterwards, by the workers. `source` is its pair's slot in made_,
     // or -1 - its slot in madeBySegment_.
     const auto append = [&](int source, BodySide a, BodySide b) {
-        listed_.push_back({source, solverBodyOf(a), solverBodyOf(b)});
+        listed_.push_back(source);
+        listedEnds_.push_back({solverBodyOf(a), solverBodyOf(b)});
     };
     const auto add = [&](BodySide a, BodySide b, Vec2 centreA, Vec2 centreB, const Manifold& m, const Material& ma,
                          const Material& mb) {
@@ -181,7 +182,6 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     // Model no more than the scene needs: with every body asleep or fixed, no pair can act or wake
     // anything but a moving kinematic segment (below), so a sleeping scene pays no pair search.
     if (!anyAwake) {
-        contacts_.clear();
         if (anyAsleep) reachBySegments(ctx, dt);
         return;
     }
@@ -279,19 +279,6 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
                 collideRoundedPolygons(shapes_[i], shape, reach_[i] + reach), bi.material, seg.material);
         }
     }
-    // The list, each contact copied from where it was made (the slots in the list are kept between
-    // steps, so a list as long as the last costs no construction).
-    contacts_.resize(listed_.size());
-    forShares(pool_, listed_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
-        for (std::size_t k = first; k < last; ++k) {
-            const Listed& l = listed_[k];
-            RigidContact& c = contacts_[k];
-            c = l.source >= 0 ? made_[static_cast<std::size_t>(l.source)]
-                              : madeBySegment_[static_cast<std::size_t>(-1 - l.source)];
-            c.bodyA = l.bodyA;
-            c.bodyB = l.bodyB;
-        }
-    });
     if (anyAsleep) reachBySegments(ctx, dt);
 }
 
@@ -332,8 +319,22 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
         if (movable) s.inverseMass = c.inverseMass;
         if (movable && !omega.empty()) s.inverseInertia = c.inverseInertia;
     }
+    // The contacts, listed in findContacts, go straight to their places in colour order, copied by
+    // the workers from where they were made (the slots are kept between steps, so a list as long as
+    // the last costs no construction); then each point gets last step's impulses back.
+    colours_.assign(listedEnds_, states_);
+    const std::span<const int> place = colours_.placeOfListed();
+    contacts_.resize(listed_.size());
+    forShares(pool_, listed_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            RigidContact& c = contacts_[static_cast<std::size_t>(place[k])];
+            c = listedContact(k);
+            c.bodyA = listedEnds_[k].bodyA;
+            c.bodyB = listedEnds_[k].bodyB;
+        }
+    });
+    cache_.apply(contacts_, pool_);
     chooseSoftness(contacts_, states_);
-    colours_.build(contacts_, states_, pool_);
     blocks_.pack(contacts_, colours_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }

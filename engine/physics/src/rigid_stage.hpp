@@ -32,8 +32,10 @@ public:
     /// Calls `list(i)` for each circle that meets a rigid body with friction (it must turn this step).
     template <class List>
     void listFrictionCircles(List list) const {
-        for (const RigidContact& c : contacts_)
+        for (std::size_t k = 0; k < listed_.size(); ++k) {
+            const RigidContact& c = listedContact(k);
             if (c.friction > 0.0 && !c.b.rigid && c.b.index < circleCount_) list(c.b.index);
+        }
     }
     /// Binds the circle solver's bodies and omegas (empty when the step has no rotation) for the substeps.
     void bind(std::span<SolverBody> others, std::span<double> omega, std::span<const Circle> circles);
@@ -121,11 +123,15 @@ private:
     std::vector<Manifold> manifolds_; // per pair of pairs_: its manifold (none when neither side moves)
     std::vector<RigidContact> made_;  // per pair of pairs_ with a manifold: its contact, made by the narrowphase
     std::vector<RigidContact> madeBySegment_; // the contacts with segments, in list order
-    struct Listed {
-        int source;       // the contact's slot in made_, or -1 - its slot in madeBySegment_
-        int bodyA, bodyB; // its sides' solver bodies
-    };
-    std::vector<Listed> listed_;     // the step's contacts in list order, before they are copied into contacts_
+    // The step's contacts in list order, from findContacts until bind() puts them in colour order:
+    // each one's slot in made_ (or -1 - its slot in madeBySegment_), and its sides' solver bodies.
+    std::vector<int> listed_;
+    std::vector<RigidContactEnds> listedEnds_;
+    const RigidContact& listedContact(std::size_t k) const {
+        const int source = listed_[k];
+        return source >= 0 ? made_[static_cast<std::size_t>(source)]
+                           : madeBySegment_[static_cast<std::size_t>(-1 - source)];
+    }
     std::vector<SolverBody> others_; // stand-ins while the contacts are built
     std::vector<double> zeros_;
     std::vector<RigidContact> contacts_; // in colour order from bind() on (RigidColours)

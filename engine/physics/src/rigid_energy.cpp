@@ -35,6 +35,8 @@ bool unmovableVelocity(const RigidSolverView& view, BodySide side, Vec2& velocit
 /// energy plus m |g| times its half thickness) was not a bounce but the substeps running away: a body
 /// struck on a corner at hundreds of m/s spins so fast that its contacts' fixed anchors mean nothing.
 constexpr double kRunawayFraction = 0.05;
+/// Bodies in a worker's share of the energy check (a body costs tens of nanoseconds).
+constexpr std::size_t kEnergyChunk = 256;
 
 } // namespace
 
@@ -67,41 +69,44 @@ void RigidStage::capBounceEnergy() {
         for (std::size_t i = 0; i < n; ++i)
             if (joints_.holdsBody(static_cast<int>(i))) onlyFixed_[i] = 0;
     const double g = gravity_.length();
-    for (std::size_t i = 0; i < n; ++i) {
-        RigidState& s = states_[i];
-        const RigidState& before = beforeBounce_[i];
-        if (!onlyFixed_[i] || s.inverseMass == 0.0) continue;
-        const Vec2 u = frame_[i];
-        // E = KE + m (-g) . x in the partners' frame: the energy it began with, less the potential
-        // energy where it ends (the frame has moved u dt by then).
-        const double m = 1.0 / s.inverseMass;
-        const Vec2 end = startPosition_[i] + s.displacement - u * stepTime_;
-        const double startEnergy = kineticEnergy(s, startVelocity_[i] - u, startOmega_[i]);
-        const double budget = startEnergy - m * gravity_.dot(startPosition_[i]) + m * gravity_.dot(end);
-        const Vec2 dv = s.velocity - before.velocity;
-        const double dw = s.omega - before.omega;
-        if (kineticEnergy(s, s.velocity - u, s.omega) > budget && (dv.x != 0.0 || dv.y != 0.0 || dw != 0.0)) {
-            // KE(s) = KE0 + B s + A s^2 along before + s du: the largest s in [0, 1] within the budget,
-            // or (already over it before the bounce) the s that adds least.
-            const double inertia = s.inverseInertia > 0.0 ? 1.0 / s.inverseInertia : 0.0;
-            const double a = 0.5 * (m * dv.lengthSquared() + inertia * dw * dw);
-            const double b = m * (before.velocity - u).dot(dv) + inertia * before.omega * dw;
-            const double ke0 = kineticEnergy(s, before.velocity - u, before.omega);
-            double scale = std::clamp(-b / (2.0 * a), 0.0, 1.0);
-            if (ke0 <= budget) {
-                // The larger root of A s^2 + B s + (KE0 - budget) = 0; KE0 - budget <= 0 keeps it real.
-                const double c = ke0 - budget;
-                scale = std::clamp((-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a), 0.0, 1.0);
+    // Each body on its own from here: any split among the workers, the same bits.
+    forShares(pool_, n, kEnergyChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+            RigidState& s = states_[i];
+            const RigidState& before = beforeBounce_[i];
+            if (!onlyFixed_[i] || s.inverseMass == 0.0) continue;
+            const Vec2 u = frame_[i];
+            // E = KE + m (-g) . x in the partners' frame: the energy it began with, less the potential
+            // energy where it ends (the frame has moved u dt by then).
+            const double m = 1.0 / s.inverseMass;
+            const Vec2 end = startPosition_[i] + s.displacement - u * stepTime_;
+            const double startEnergy = kineticEnergy(s, startVelocity_[i] - u, startOmega_[i]);
+            const double budget = startEnergy - m * gravity_.dot(startPosition_[i]) + m * gravity_.dot(end);
+            const Vec2 dv = s.velocity - before.velocity;
+            const double dw = s.omega - before.omega;
+            if (kineticEnergy(s, s.velocity - u, s.omega) > budget && (dv.x != 0.0 || dv.y != 0.0 || dw != 0.0)) {
+                // KE(s) = KE0 + B s + A s^2 along before + s du: the largest s in [0, 1] within the budget,
+                // or (already over it before the bounce) the s that adds least.
+                const double inertia = s.inverseInertia > 0.0 ? 1.0 / s.inverseInertia : 0.0;
+                const double a = 0.5 * (m * dv.lengthSquared() + inertia * dw * dw);
+                const double b = m * (before.velocity - u).dot(dv) + inertia * before.omega * dw;
+                const double ke0 = kineticEnergy(s, before.velocity - u, before.omega);
+                double scale = std::clamp(-b / (2.0 * a), 0.0, 1.0);
+                if (ke0 <= budget) {
+                    // The larger root of A s^2 + B s + (KE0 - budget) = 0; KE0 - budget <= 0 keeps it real.
+                    const double c = ke0 - budget;
+                    scale = std::clamp((-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a), 0.0, 1.0);
+                }
+                s.velocity = before.velocity + dv * scale;
+                s.omega = before.omega + dw * scale;
             }
-            s.velocity = before.velocity + dv * scale;
-            s.omega = before.omega + dw * scale;
+            // Still far over: the substeps ran away. The body takes its free flight for the step instead
+            // (semi-implicit Euler, as the substeps integrate it) and the continuous pass finds where that
+            // meets a segment and bounces it there.
+            const double excess = kineticEnergy(s, s.velocity - u, s.omega) - budget;
+            if (!(excess <= kRunawayFraction * (startEnergy + m * g * thickness_[i]))) runFree(i);
         }
-        // Still far over: the substeps ran away. The body takes its free flight for the step instead
-        // (semi-implicit Euler, as the substeps integrate it) and the continuous pass finds where that
-        // meets a segment and bounces it there.
-        const double excess = kineticEnergy(s, s.velocity - u, s.omega) - budget;
-        if (!(excess <= kRunawayFraction * (startEnergy + m * g * thickness_[i]))) runFree(i);
-    }
+    });
 }
 
 void RigidStage::runFree(std::size_t i) {

@@ -331,10 +331,10 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
             c = listedContact(k);
             c.bodyA = listedEnds_[k].bodyA;
             c.bodyB = listedEnds_[k].bodyB;
+            chooseSoftness(std::span(&c, 1), states_);
         }
     });
     cache_.apply(contacts_, pool_);
-    chooseSoftness(contacts_, states_);
     blocks_.pack(contacts_, colours_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }
@@ -442,7 +442,12 @@ void RigidStage::integratePositions(double h) {
 void RigidStage::applyRestitution(double threshold) {
     blocks_.unpack(contacts_, pool_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
     cache_.store(contacts_, colours_.placeOfListed()); // the last substep's impulses, not restitution's bounce
-    beforeBounce_ = states_;
+    beforeBounce_.resize(states_.size());
+    forShares(pool_, states_.size(), kBodyChunk, [&](std::size_t first, std::size_t last) {
+        std::copy(states_.begin() + static_cast<std::ptrdiff_t>(first),
+                  states_.begin() + static_cast<std::ptrdiff_t>(last),
+                  beforeBounce_.begin() + static_cast<std::ptrdiff_t>(first));
+    });
     loadOthers();
     sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {
         applyRigidRestitution(std::span(contacts_).subspan(first, last - first), states_, threshold);
@@ -453,15 +458,17 @@ void RigidStage::applyRestitution(double threshold) {
 
 void RigidStage::finish(StepContext& ctx) const {
     ctx.stats.speedClamps += clamps_;
-    for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
-        RigidBody& b = ctx.bodies[i];
-        if (b.motion == Motion::fixed || b.sleep.asleep) continue;
-        const RigidState& s = states_[i];
-        b.position = startPosition_[i] + s.displacement;
-        b.angle += s.turn;
-        b.velocity = s.velocity;
-        b.angularVelocity = s.omega;
-    }
+    forShares(pool_, ctx.bodies.size(), kBodyChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+            RigidBody& b = ctx.bodies[i];
+            if (b.motion == Motion::fixed || b.sleep.asleep) continue;
+            const RigidState& s = states_[i];
+            b.position = startPosition_[i] + s.displacement;
+            b.angle += s.turn;
+            b.velocity = s.velocity;
+            b.angularVelocity = s.omega;
+        }
+    });
 }
 
 } // namespace rube

@@ -59,7 +59,8 @@ public:
     /// at its time of impact and bounced there; returns the impacts recorded (rigid_sweep.cpp).
     int sweep(StepContext& ctx, double dt);
 
-    /// The step's rigid contacts (for the sleeping islands, after the step).
+    /// The step's rigid contacts in colour order (for the sleeping islands, after the step): made at
+    /// bind(), so between prepare() and bind() they are still the last step's.
     std::span<const RigidContact> contacts() const { return contacts_; }
     /// Sleepers that an awake dynamic body's contacts, or a moving kinematic body's box, reach this
     /// step: circle c as c, rigid body i as -1 - i (SleepIslands::wakeReached wakes their islands).

@@ -5,15 +5,12 @@
 
 namespace rube {
 
-void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool) {
+void RigidColours::build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies) {
     ends_.resize(contacts.size());
     for (std::size_t k = 0; k < contacts.size(); ++k) ends_[k] = {contacts[k].bodyA, contacts[k].bodyB};
     assign(ends_, bodies);
-    // The contacts themselves (a few hundred bytes each) are moved by the workers, each to its own place.
     sorted_.resize(contacts.size());
-    forShares(pool, contacts.size(), kContactChunk * 2, [&](std::size_t first, std::size_t last) {
-        for (std::size_t k = first; k < last; ++k) sorted_[static_cast<std::size_t>(to_[k])] = contacts[k];
-    });
+    for (std::size_t k = 0; k < contacts.size(); ++k) sorted_[static_cast<std::size_t>(to_[k])] = contacts[k];
     contacts.swap(sorted_);
 }
 

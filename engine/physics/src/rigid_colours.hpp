@@ -31,7 +31,7 @@ public:
     /// fixed, static and asleep bodies do not count. One that fits none of kRigidColours goes to
     /// the overflow colour. Within a colour the contacts keep their list order, so the result
     /// depends on nothing but the list.
-    void build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies, WorkerPool* pool = nullptr);
+    void build(std::vector<RigidContact>& contacts, std::span<const RigidState> bodies);
     /// The same colours for contacts known by their solver bodies alone (ends[k] of the k-th in list
     /// order), without moving anything: the k-th goes to placeOfListed()[k].
     void assign(std::span<const RigidContactEnds> ends, std::span<const RigidState> bodies);

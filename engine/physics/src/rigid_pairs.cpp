@@ -32,6 +32,20 @@ BoundingBox fatten(const BoundingBox& b) {
 
 } // namespace
 
+namespace {
+
+/// A cell's key: its column and row, each non-negative and below 2^32, in one sortable number.
+std::uint64_t cellKey(std::int64_t x, std::int64_t y) {
+    return static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y);
+}
+
+} // namespace
+
+void RigidPairFinder::fileRange(const Range& r, int item, std::vector<Entry>& into) {
+    for (std::int64_t x = r.x0; x <= r.x1; ++x)
+        for (std::int64_t y = r.y0; y <= r.y1; ++y) into.push_back({cellKey(x, y), item});
+}
+
 bool RigidPairFinder::Range::large() const {
     return static_cast<double>(x1 - x0 + 1) * static_cast<double>(y1 - y0 + 1) > kMaxCellsPerItem;
 }
@@ -111,9 +125,7 @@ void RigidPairFinder::file(int rigidCount) {
             large_.push_back(i);
             continue;
         }
-        for (std::int64_t x = r.x0; x <= r.x1; ++x)
-            for (std::int64_t y = r.y0; y <= r.y1; ++y)
-                entries_.push_back({static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y), i});
+        fileRange(r, i, entries_);
     }
     std::sort(entries_.begin(), entries_.end());
 
@@ -146,9 +158,7 @@ bool RigidPairFinder::refile(int rigidCount) {
             return false;
         ranges_[static_cast<std::size_t>(m)] = now;
         isMoved_[static_cast<std::size_t>(m)] = 1;
-        for (std::int64_t x = now.x0; x <= now.x1; ++x)
-            for (std::int64_t y = now.y0; y <= now.y1; ++y)
-                newEntries_.push_back({static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y), m});
+        fileRange(now, m, newEntries_);
     }
     ++refilings_;
     const auto moved = [&](int item) { return isMoved_[static_cast<std::size_t>(item)] != 0; };

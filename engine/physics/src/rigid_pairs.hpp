@@ -8,10 +8,10 @@
 // them, and everything the solver does with those contacts, are bit-identical to the n^2 search's.
 //
 // Between steps the grid files each item by a fat box, its box grown by a margin (Box2D's fat
-// AABBs), and keeps the candidate pairs, those whose fat boxes share a cell. While every box stays
-// inside its fat box the candidates stand, and a step only tests them against the new boxes, in
-// order: a resting pyramid pays no filing and no sorting. An item whose box leaves its fat box is
-// given a new one, and the grid is filed again.
+// AABBs), and keeps the candidate pairs, those whose fat boxes overlap. While every box stays inside
+// its fat box the candidates stand, and a step only tests them against the new boxes, in order: a
+// resting pyramid pays no filing and no sorting. An item whose box leaves its fat box is given a new
+// one and filed again alone; when many moved, the whole grid is.
 
 #include "broadphase_grid.hpp"
 
@@ -47,7 +47,8 @@ private:
     /// Files every item by its fat box and lists the candidate pairs, sorted, once each.
     void file(int rigidCount);
     /// Files again only the items in `moved_`, whose fat boxes changed, on the grid as it stands;
-    /// false (nothing changed) when one of them is or was too large to file, or left the grid.
+    /// false when one of them is or was too large to file, or left the grid: then the whole grid
+    /// must be filed (file()).
     bool refile(int rigidCount);
 
     /// The cells an item's fat box covers, on the grid of the last full filing.
@@ -66,12 +67,14 @@ private:
             return a.cell != b.cell ? a.cell < b.cell : a.item < b.item;
         }
     };
+    /// Appends an entry for each cell of `r`, filing `item`.
+    static void fileRange(const Range& r, int item, std::vector<Entry>& into);
     std::vector<BoundingBox> boxes_; // every item's box this step: rigid bodies, then circles
     std::vector<BoundingBox> fat_;   // every item's fat box: holds its box, since the grid was filed
     int rigidCount_ = -1;            // the rigid count the candidates were filed for
     std::vector<Entry> entries_;
     std::vector<int> large_;              // items whose fat box spans too many cells to file: paired with every item
-    std::vector<RigidPair> candidates_;   // pairs whose fat boxes share a cell (or with a large item), sorted
+    std::vector<RigidPair> candidates_;   // pairs whose fat boxes overlap, sorted
     long long refilings_ = 0;
     // The grid of the last full filing: its origin and cell, and each item's cells.
     Vec2 origin_;

@@ -83,61 +83,36 @@ void RigidContactCache::remap(const SlotRemap& remap) {
 }
 
 void RigidContactCache::store(std::span<const RigidContact> contacts, std::span<const int> listOrder) {
-    // Visited in list order (contacts[listOrder[k]]), which is key order (RigidStage::findContacts:
-    // body by body, the others by index), the entries are one ascending run; visited colour by colour,
-    // each colour in list order, a few. Merged, the runs are what a sort gives, at a fraction of its
-    // cost. A contact's points are put in feature order first. Should two entries share a key, a sort
-    // of the entries in the contacts' own order decides as it always did, so warm starting never
-    // depends on the merge.
     const auto less = [](const Entry& a, const Entry& b) {
         return std::make_tuple(a.pair, a.feature) < std::make_tuple(b.pair, b.feature);
     };
-    entries_.clear();
-    runs_.clear();
-    const bool listed = !listOrder.empty() && listOrder.size() == contacts.size();
-    for (std::size_t visit = 0; visit < contacts.size(); ++visit) {
-        const RigidContact& c = contacts[listed ? static_cast<std::size_t>(listOrder[visit]) : visit];
-        const std::uint64_t pair = pairKey(c);
-        const std::size_t first = entries_.size();
-        for (int k = 0; k < c.count; ++k) {
-            const RigidContactPoint& p = c.points[k];
-            if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
-        }
-        if (entries_.size() == first) continue;
-        if (entries_.size() - first == 2 && less(entries_[first + 1], entries_[first]))
-            std::swap(entries_[first], entries_[first + 1]);
-        if (first == 0 || less(entries_[first - 1], entries_[first])) continue;
-        runs_.push_back(first); // a run starts here
-    }
-    // The runs' bounds [0, r1, ..., n), adjacent runs merged pairwise, round after round: log2(runs)
-    // passes over the entries.
-    runs_.insert(runs_.begin(), 0);
-    runs_.push_back(entries_.size());
-    const auto at = [&](std::size_t k) { return entries_.begin() + static_cast<std::ptrdiff_t>(k); };
-    while (runs_.size() > 2) {
-        std::size_t kept = 1;
-        for (std::size_t r = 0; r + 1 < runs_.size(); r += 2) {
-            const std::size_t end = r + 2 < runs_.size() ? runs_[r + 2] : runs_[r + 1];
-            if (r + 2 < runs_.size()) std::inplace_merge(at(runs_[r]), at(runs_[r + 1]), at(end), less);
-            runs_[kept++] = end;
-        }
-        runs_.resize(kept);
-    }
-    for (std::size_t k = 1; k < entries_.size(); ++k)
-        if (!less(entries_[k - 1], entries_[k])) {
-            // Two entries share a key: the sort of the entries as listed, as before the runs were merged.
-            entries_.clear();
-            for (const RigidContact& c : contacts) {
-                const std::uint64_t pair = pairKey(c);
-                for (int j = 0; j < c.count; ++j) {
-                    const RigidContactPoint& p = c.points[j];
-                    if (p.normalImpulse > 0.0)
-                        entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
-                }
+    // Every pushing point's entry, the contacts visited in the order `at` gives.
+    const auto gather = [&](auto at) {
+        entries_.clear();
+        for (std::size_t visit = 0; visit < contacts.size(); ++visit) {
+            const RigidContact& c = contacts[at(visit)];
+            const std::uint64_t pair = pairKey(c);
+            for (int k = 0; k < c.count; ++k) {
+                const RigidContactPoint& p = c.points[k];
+                if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
             }
-            std::sort(entries_.begin(), entries_.end(), less);
-            return;
         }
+    };
+    // Visited in list order (contacts[listOrder[k]]), which is key order (RigidStage::findContacts:
+    // body by body, the others by index), the entries come sorted but for a contact's two points,
+    // which one swap puts right. Anything else (no list order, or two entries sharing a key) is sorted
+    // from the contacts' own order, as always, so warm starting never depends on the shortcut.
+    if (!listOrder.empty() && listOrder.size() == contacts.size()) {
+        gather([&](std::size_t visit) { return static_cast<std::size_t>(listOrder[visit]); });
+        for (std::size_t k = 1; k < entries_.size(); ++k)
+            if (entries_[k - 1].pair == entries_[k].pair && less(entries_[k], entries_[k - 1]))
+                std::swap(entries_[k - 1], entries_[k]);
+        bool ascending = true;
+        for (std::size_t k = 1; k < entries_.size() && ascending; ++k) ascending = less(entries_[k - 1], entries_[k]);
+        if (ascending) return;
+    }
+    gather([](std::size_t visit) { return visit; });
+    std::sort(entries_.begin(), entries_.end(), less);
 }
 
 } // namespace rube

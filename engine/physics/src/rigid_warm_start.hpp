@@ -37,7 +37,6 @@ private:
         double tangentImpulse = 0.0;
     };
     std::vector<Entry> entries_; ///< sorted by (pair, feature)
-    std::vector<std::size_t> runs_; ///< store(): where the ascending runs of the entries begin
 };
 
 } // namespace rube

@@ -4,6 +4,7 @@
 // zero. Last, through the narrowphase: a box sliding on the ground keeps each corner's impulses.
 #include "rigid_manifold.hpp" // internal: tests may reach inside, users may not
 #include "rigid_warm_start.hpp"
+#include "worker_pool.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -131,6 +132,58 @@ TEST_CASE("rigid contacts stored colour by colour find their impulses again", "[
             }
         CHECK(found > 300);
     }
+}
+
+TEST_CASE("rigid contacts stored by the workers find their impulses again", "[rigid][warmstart][workers]") {
+    // A list long enough for the workers to share the store (chunks of 512 contacts), colour ordered,
+    // stored with 1 to 3 workers: every pushing point gets its own impulses back. In some rounds one
+    // pair appears as two contacts in a row (features of their own), where the list is not in key
+    // order: its feature between the first's two (one swap mends that, unless a seam lies between) or
+    // below both (only a sort mends that), placed before, on and after a chunk's seam.
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> impulse(0.01, 3.0), unit(0.0, 1.0);
+    for (const int repeatAt : {-1, 511, 512, 1023, 1024, 1500})
+        for (const bool below : {false, true}) {
+            std::vector<RigidContact> list;
+            for (int a = 0; static_cast<int>(list.size()) < 2500; ++a)
+                for (int other = 0; other < 4; ++other) {
+                    const bool rigid = other < 2;
+                    const std::uint32_t f0 = static_cast<std::uint32_t>(7 * a + other + 1), f1 = f0 + 0x100000;
+                    const bool swapped = unit(rng) < 0.5;
+                    const BodySide b{rigid ? a + 1 + other : 3 * a + other, rigid};
+                    list.push_back(contact({a, true}, b, {swapped ? f1 : f0, swapped ? f0 : f1},
+                                           {unit(rng) < 0.2 ? 0.0 : impulse(rng), impulse(rng)}));
+                    if (static_cast<int>(list.size()) == repeatAt) // the same pair again
+                        list.push_back(contact({a, true}, b, {below ? f0 - 1 : f0 + 0x80000}, {impulse(rng)}));
+                }
+            std::vector<RigidContact> coloured;
+            std::vector<int> place(list.size());
+            constexpr std::size_t kColours = 5;
+            for (std::size_t c = 0; c < kColours; ++c)
+                for (std::size_t k = c; k < list.size(); k += kColours) {
+                    place[k] = static_cast<int>(coloured.size());
+                    coloured.push_back(list[k]);
+                }
+            for (int workers = 1; workers <= 3; ++workers) {
+                WorkerPool pool(workers);
+                RigidContactCache cache;
+                cache.store(coloured, place, &pool);
+                std::vector<RigidContact> next;
+                for (const RigidContact& c : list) next.push_back(fresh(c));
+                cache.apply(next, &pool);
+                int found = 0;
+                for (std::size_t k = 0; k < list.size(); ++k)
+                    for (int j = 0; j < list[k].count; ++j) {
+                        const RigidContactPoint &was = list[k].points[j], &now = next[k].points[j];
+                        INFO("repeat at " << repeatAt << (below ? " below" : " between") << ", workers " << workers
+                                          << ", contact " << k << ", point " << j);
+                        REQUIRE(now.normalImpulse == was.normalImpulse);
+                        REQUIRE(now.tangentImpulse == (was.normalImpulse > 0.0 ? was.tangentImpulse : 0.0));
+                        found += now.carried ? 1 : 0;
+                    }
+                CHECK(found > 4000);
+            }
+        }
 }
 
 TEST_CASE("a rigid contact point of another pair or feature, or one that did not push, starts from zero",

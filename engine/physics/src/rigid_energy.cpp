@@ -56,12 +56,20 @@ void RigidStage::capBounceEnergy() {
             onlyFixed_[i] = 0;
         }
     };
-    for (const RigidContact& c : contacts_) {
-        Vec2 u;
-        const bool unmovable = unmovableVelocity(view_, c.b, u);
-        meet(static_cast<std::size_t>(c.a.index), unmovable, u);
-        if (c.b.rigid) meet(static_cast<std::size_t>(c.b.index), false, u);
-    }
+    // Colour by colour, shared among the workers: no two contacts of a colour share a movable body, and
+    // only movable bodies are met (the others are left alone below). The outcome for a body does not
+    // depend on the order its contacts are met in: it keeps the frame only if all of them agree on it.
+    sweepColours(pool_, colours_, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            const RigidContact& c = contacts_[k];
+            Vec2 u;
+            const bool unmovable = unmovableVelocity(view_, c.b, u);
+            const auto a = static_cast<std::size_t>(c.a.index);
+            if (states_[a].inverseMass != 0.0) meet(a, unmovable, u);
+            if (c.b.rigid && states_[static_cast<std::size_t>(c.b.index)].inverseMass != 0.0)
+                meet(static_cast<std::size_t>(c.b.index), false, u);
+        }
+    });
     // A pinned body is held by its pivot, which does no work but is not a contact: left alone.
     for (const PivotConstraint& p : pivots_) onlyFixed_[static_cast<std::size_t>(p.body)] = 0;
     // Likewise a body a joint holds (a motor or a spring may do work on it).

@@ -28,9 +28,6 @@ constexpr double kMaxWarmStartTurn = 0.25;
 /// Pivots: stiffer than contacts and less damped, as Box2D v3's joints (twice the contact hertz).
 constexpr double kPivotHertz = 120.0;
 constexpr double kPivotDampingRatio = 2.0;
-/// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
-/// a body's update costs a few nanoseconds, a hand-over about a microsecond.
-constexpr std::size_t kBodyChunk = 256;
 /// Blocks (of four contacts) in a chunk of a per-block loop: the approach measure, the arms.
 constexpr std::size_t kBlockLoopChunk = 16;
 /// Candidate pairs in a chunk of the narrowphase (a manifold costs about 0.1 us).
@@ -70,6 +67,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     thickness_.resize(n);
     reach_.resize(n);
     shapes_.resize(n);
+    boxes_.resize(n);
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     // Each body's own slots only: any split among the workers gives the same states and shapes.
     forShares(pool_, n, kBodyChunk, [&](std::size_t first, std::size_t last) {
@@ -92,6 +90,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
             reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * boundingRadius(b)) * dt +
                         (dynamic ? gravityTravel : 0.0);
             shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
+            boxes_[i] = boundsOf(shapes_[i], reach_[i]); // what the body may reach this step
         }
     });
     const double h = dt / std::max(1, ctx.def.substeps);
@@ -120,9 +119,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     const std::size_t n = bodies.size();
     const auto isDynamic = [&](std::size_t i) { return states_[i].inverseMass > 0.0; };
-    boxes_.resize(n);
-    auto& boxes = boxes_;
-    for (std::size_t i = 0; i < n; ++i) boxes[i] = boundsOf(shapes_[i], reach_[i]);
+    const auto& boxes = boxes_; // made by prepare()
     // The circle solver's bodies are not bound yet: effective masses need only the rigid states and
     // the circles' masses and inertias, so a stand-in view serves (a zero omega per body says the
     // circles may turn: their inertia enters the tangent mass).
@@ -231,6 +228,16 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             }
         }
     });
+    // Each segment's shape and the box it may reach, once for all the bodies.
+    segmentShapes_.resize(ctx.segments.size());
+    segmentReach_.resize(ctx.segments.size());
+    segmentBoxes_.resize(ctx.segments.size());
+    for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
+        const Segment& seg = ctx.segments[s];
+        segmentReach_[s] = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
+        segmentShapes_[s] = makeRoundedPolygon(seg);
+        segmentBoxes_[s] = boundsOf(segmentShapes_[s], segmentReach_[s]);
+    }
     std::size_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const RigidBody& bi = bodies[i];
@@ -271,12 +278,11 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
         if (!isDynamic(i)) continue;
         for (std::size_t s = 0; s < ctx.segments.size(); ++s) {
             const Segment& seg = ctx.segments[s];
-            const double reach = seg.motion() == Motion::kinematic ? seg.velocity.length() * dt : 0.0;
-            const RoundedPolygon shape = makeRoundedPolygon(seg);
             const BodySide segmentSide{circleCount_ + static_cast<int>(s), false};
-            if (!boxes[i].overlaps(boundsOf(shape, reach)) || tied(side, segmentSide)) continue;
+            if (!boxes[i].overlaps(segmentBoxes_[s]) || tied(side, segmentSide)) continue;
             add(side, segmentSide, bi.position, seg.a,
-                collideRoundedPolygons(shapes_[i], shape, reach_[i] + reach), bi.material, seg.material);
+                collideRoundedPolygons(shapes_[i], segmentShapes_[s], reach_[i] + segmentReach_[s]), bi.material,
+                seg.material);
         }
     }
     if (anyAsleep) reachBySegments(ctx, dt);
@@ -441,7 +447,7 @@ void RigidStage::integratePositions(double h) {
 
 void RigidStage::applyRestitution(double threshold) {
     blocks_.unpack(contacts_, pool_); // the substeps' impulses and arms, for restitution, the cache, events and sleep
-    cache_.store(contacts_, colours_.placeOfListed()); // the last substep's impulses, not restitution's bounce
+    cache_.store(contacts_, colours_.placeOfListed(), pool_); // the last substep's impulses, not restitution's bounce
     beforeBounce_.resize(states_.size());
     forShares(pool_, states_.size(), kBodyChunk, [&](std::size_t first, std::size_t last) {
         std::copy(states_.begin() + static_cast<std::ptrdiff_t>(first),

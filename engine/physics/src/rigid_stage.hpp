@@ -53,7 +53,7 @@ public:
     void finish(StepContext& ctx) const;
     /// Reports every rigid contact that first touched this step faster than the resting speed as an
     /// Impact (counted in the stats, as the circle contacts' are) and returns how many (rigid_impacts.cpp).
-    int recordImpacts(StepContext& ctx) const;
+    int recordImpacts(StepContext& ctx);
     /// The continuous pass, after finish() and before kinematic segments move: a body that moved or
     /// turned further than its half thickness and ends through a segment it met on the way is put back
     /// at its time of impact and bounced there; returns the impacts recorded (rigid_sweep.cpp).
@@ -70,6 +70,9 @@ public:
     using Box = BoundingBox;
 
 private:
+    /// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
+    /// a body's update costs a few nanoseconds, a hand-over about a microsecond.
+    static constexpr std::size_t kBodyChunk = 256;
     void findContacts(const StepContext& ctx, double dt);
     /// The solver body of a contact's side: a rigid body's own slot, or the circle solver's body's
     /// place in the compact list after the rigid ones (added on first use).
@@ -115,9 +118,14 @@ private:
     double stepTime_ = 0.0; // dt, s
     int substeps_ = 1;
     std::vector<double> reach_; // per rigid body: speculative margin for the step
-    std::vector<RoundedPolygon> shapes_;
+    std::vector<RoundedPolygon> shapes_;   // per rigid body: its shape at the step's start
+    std::vector<std::uint8_t> fast_;       // per rigid body: moved further than its half thickness (sweep)
+    std::vector<std::int8_t> struckPoint_; // per contact: its point that struck, or none (recordImpacts)
     std::vector<Box> boxes_;
     std::vector<Box> circleBoxes_;    // per circle: the box it may reach this step
+    std::vector<RoundedPolygon> segmentShapes_; // per segment: its shape this step
+    std::vector<double> segmentReach_;          // per segment: how far it moves this step, m
+    std::vector<Box> segmentBoxes_;             // per segment: the box it may reach this step
     std::vector<double> circleReach_; // per circle: its speculative margin for the step
     RigidPairFinder pairFinder_;
     std::vector<RigidPair> pairs_;

@@ -95,21 +95,34 @@ double sweptTimeOfImpact(const SweptShape& a, const SweptShape& b, double target
 }
 
 int RigidStage::sweep(StepContext& ctx, double dt) {
+    // Without segments there is nothing to pass through (the bodies' own pairs are the solver's).
+    if (ctx.segments.empty()) return 0;
+    // Which bodies moved or turned further than their half thickness: each body's own slot, so any
+    // split among the workers gives the same marks. A body that moved less cannot have passed a
+    // line: the step's speculative contacts were enough.
+    const std::size_t n = ctx.bodies.size();
+    fast_.resize(n);
+    forShares(pool_, n, kBodyChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = first; i < last; ++i) {
+            const RigidState& s = states_[i];
+            // shapes_[i] is the body at its start pose (prepare), as the sweep starts from.
+            fast_[i] = s.inverseMass != 0.0 &&
+                       !(s.displacement.length() + std::abs(s.turn) * coreExtent(shapes_[i], startPosition_[i]) <=
+                         thickness_[i]);
+        }
+    });
     int impacts = 0;
-    for (std::size_t i = 0; i < ctx.bodies.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!fast_[i]) continue;
         RigidBody& body = ctx.bodies[i];
         const RigidState& s = states_[i];
-        if (s.inverseMass == 0.0) continue;
-        // A body that moved and turned less than its half thickness cannot have passed a line: the
-        // step's speculative contacts were enough.
         const double thick = thickness_[i];
         SweptShape shape;
         shape.centre = startPosition_[i];
-        shape.start = makeRoundedPolygon(body, startPosition_[i], startAngle_[i]);
+        shape.start = shapes_[i];
         shape.move = s.displacement;
         shape.turn = s.turn;
         shape.extent = coreExtent(shape.start, shape.centre);
-        if (shape.move.length() + std::abs(shape.turn) * shape.extent <= thick) continue;
         const Box bounds = sweptBounds(shape);
         const RoundedPolygon end = makeRoundedPolygon(body, body.position, body.angle);
         double first = 2.0;

@@ -10,6 +10,8 @@ namespace {
 
 /// Contacts in a worker's share of the look-ups (one costs a few tens of nanoseconds).
 constexpr std::size_t kApplyChunk = 256;
+/// Contacts in a worker's share of the store (one costs a few nanoseconds).
+constexpr std::size_t kStoreChunk = 512;
 
 /// One number per body pair: side A (always a rigid body), whether B is rigid, and B's index.
 std::uint64_t pairKey(const RigidContact& c) {
@@ -77,42 +79,93 @@ void RigidContactCache::remap(const SlotRemap& remap) {
         entries_[kept++] = moved;
     }
     entries_.resize(kept);
-    std::sort(entries_.begin(), entries_.end(), [](const Entry& x, const Entry& y) {
-        return std::make_tuple(x.pair, x.feature) < std::make_tuple(y.pair, y.feature);
-    });
+    std::sort(entries_.begin(), entries_.end(), keyLess);
 }
 
-void RigidContactCache::store(std::span<const RigidContact> contacts, std::span<const int> listOrder) {
-    const auto less = [](const Entry& a, const Entry& b) {
-        return std::make_tuple(a.pair, a.feature) < std::make_tuple(b.pair, b.feature);
-    };
-    // Every pushing point's entry, the contacts visited in the order `at` gives.
-    const auto gather = [&](auto at) {
-        entries_.clear();
-        for (std::size_t visit = 0; visit < contacts.size(); ++visit) {
-            const RigidContact& c = contacts[at(visit)];
-            const std::uint64_t pair = pairKey(c);
-            for (int k = 0; k < c.count; ++k) {
-                const RigidContactPoint& p = c.points[k];
-                if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
-            }
-        }
-    };
+void RigidContactCache::store(std::span<const RigidContact> contacts, std::span<const int> listOrder,
+                              WorkerPool* pool) {
     // Visited in list order (contacts[listOrder[k]]), which is key order (RigidStage::findContacts:
     // body by body, the others by index), the entries come sorted but for a contact's two points,
     // which one swap puts right. Anything else (no list order, or two entries sharing a key) is sorted
     // from the contacts' own order, as always, so warm starting never depends on the shortcut.
-    if (!listOrder.empty() && listOrder.size() == contacts.size()) {
-        gather([&](std::size_t visit) { return static_cast<std::size_t>(listOrder[visit]); });
-        for (std::size_t k = 1; k < entries_.size(); ++k)
-            if (entries_[k - 1].pair == entries_[k].pair && less(entries_[k], entries_[k - 1]))
+    if (!listOrder.empty() && listOrder.size() == contacts.size() && storeInListOrder(contacts, listOrder, pool))
+        return;
+    entries_.clear();
+    for (const RigidContact& c : contacts) {
+        const std::uint64_t pair = pairKey(c);
+        for (int k = 0; k < c.count; ++k) {
+            const RigidContactPoint& p = c.points[k];
+            if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
+        }
+    }
+    std::sort(entries_.begin(), entries_.end(), keyLess);
+}
+
+bool RigidContactCache::storeInListOrder(std::span<const RigidContact> contacts, std::span<const int> listOrder,
+                                         WorkerPool* pool) {
+    const auto at = [&](std::size_t visit) -> const RigidContact& {
+        return contacts[static_cast<std::size_t>(listOrder[visit])];
+    };
+    // Two phases over chunks of the list: each chunk counts its pushing points, then writes their
+    // entries at the sum of the counts before it, puts each contact's two in key order and checks
+    // that its entries ascend. The entries land where one gather in list order puts them, for any split.
+    const std::size_t n = listOrder.size();
+    const std::size_t chunkCount = (n + kStoreChunk - 1) / kStoreChunk;
+    chunkEntries_.assign(chunkCount, 0);
+    chunkAscending_.assign(chunkCount, 1);
+    const auto count = [&](std::size_t first, std::size_t last) {
+        std::size_t entries = 0;
+        for (std::size_t visit = first; visit < last; ++visit) {
+            const RigidContact& c = at(visit);
+            for (int k = 0; k < c.count; ++k) entries += c.points[k].normalImpulse > 0.0 ? 1 : 0;
+        }
+        chunkEntries_[first / kStoreChunk] = entries;
+    };
+    const auto fill = [&](std::size_t first, std::size_t last) {
+        const std::size_t chunk = first / kStoreChunk;
+        std::size_t out = 0;
+        for (std::size_t j = 0; j < chunk; ++j) out += chunkEntries_[j];
+        const std::size_t begin = out;
+        for (std::size_t visit = first; visit < last; ++visit) {
+            const RigidContact& c = at(visit);
+            const std::uint64_t pair = pairKey(c);
+            for (int k = 0; k < c.count; ++k) {
+                const RigidContactPoint& p = c.points[k];
+                if (p.normalImpulse > 0.0) entries_[out++] = {pair, p.feature, p.normalImpulse, p.tangentImpulse};
+            }
+        }
+        for (std::size_t k = begin + 1; k < out; ++k)
+            if (entries_[k - 1].pair == entries_[k].pair && keyLess(entries_[k], entries_[k - 1]))
                 std::swap(entries_[k - 1], entries_[k]);
         bool ascending = true;
-        for (std::size_t k = 1; k < entries_.size() && ascending; ++k) ascending = less(entries_[k - 1], entries_[k]);
-        if (ascending) return;
+        for (std::size_t k = begin + 1; k < out && ascending; ++k) ascending = keyLess(entries_[k - 1], entries_[k]);
+        chunkAscending_[chunk] = ascending ? 1 : 0;
+    };
+    entries_.resize(2 * n); // room for every point (two a contact) before the counts are summed
+    if (worthSharing(pool, n, kStoreChunk)) {
+        const std::size_t sizes[2] = {n, n}, chunks[2] = {kStoreChunk, kStoreChunk};
+        auto work = [&](int phase, std::size_t first, std::size_t last) {
+            if (phase == 0) count(first, last);
+            else fill(first, last); // the counting phase is done: every count is in
+        };
+        pool->run(2, sizes, chunks, work);
+    } else {
+        for (std::size_t first = 0; first < n; first += kStoreChunk) count(first, std::min(n, first + kStoreChunk));
+        for (std::size_t first = 0; first < n; first += kStoreChunk) fill(first, std::min(n, first + kStoreChunk));
     }
-    gather([](std::size_t visit) { return visit; });
-    std::sort(entries_.begin(), entries_.end(), less);
+    std::size_t total = 0;
+    for (const std::size_t e : chunkEntries_) total += e;
+    entries_.resize(total);
+    // In key order only if every chunk ascends and so does each seam between two chunks. (Where one
+    // gather would have swapped across a seam, the keys ascend after the swap, all distinct: the sort
+    // that follows a refusal here gives that same order.)
+    if (std::find(chunkAscending_.begin(), chunkAscending_.end(), 0) != chunkAscending_.end()) return false;
+    std::size_t seam = 0;
+    for (std::size_t j = 0; j + 1 < chunkCount; ++j) {
+        seam += chunkEntries_[j];
+        if (seam > 0 && seam < total && !keyLess(entries_[seam - 1], entries_[seam])) return false;
+    }
+    return true;
 }
 
 } // namespace rube

@@ -22,13 +22,15 @@ public:
     void apply(std::span<RigidContact> contacts, WorkerPool* pool = nullptr) const;
     /// Remembers every point's impulses at the end of the step's substeps (before restitution).
     /// `listOrder`, when given, is where each contact of the list (in key order) now stands in
-    /// `contacts`: visited so, the entries need no sorting.
-    void store(std::span<const RigidContact> contacts, std::span<const int> listOrder = {});
+    /// `contacts`: visited so, the entries need no sorting, and the workers of `pool` share the visit.
+    void store(std::span<const RigidContact> contacts, std::span<const int> listOrder = {}, WorkerPool* pool = nullptr);
     /// Moves the stored points to their bodies' new slots, dropping those of bodies that left.
     void remap(const SlotRemap& remap);
 
 private:
     void applyTo(std::span<RigidContact> contacts) const;
+    /// The entries gathered in list order; false if they do not come out in key order.
+    bool storeInListOrder(std::span<const RigidContact> contacts, std::span<const int> listOrder, WorkerPool* pool);
 
     struct Entry {
         std::uint64_t pair = 0;    ///< side A's index, side B's kind and index
@@ -36,7 +38,13 @@ private:
         double normalImpulse = 0.0;
         double tangentImpulse = 0.0;
     };
+    /// The table's order: by pair, then feature.
+    static bool keyLess(const Entry& a, const Entry& b) {
+        return a.pair != b.pair ? a.pair < b.pair : a.feature < b.feature;
+    }
     std::vector<Entry> entries_; ///< sorted by (pair, feature)
+    std::vector<std::size_t> chunkEntries_;    ///< store: entries in each chunk of the list
+    std::vector<std::uint8_t> chunkAscending_; ///< store: whether each chunk's entries ascend
 };
 
 } // namespace rube

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> sceneFilter, engineFilter;
     std::vector<int> rates;
     int repeats = 5;
+    int minRepeats = 0; // 0: not given
     double runTimeLimit = 8.0;
     bool rubeNoSleep = false, chipmunkSleep = false;
     std::vector<int> rubeWorkers;
@@ -127,17 +128,35 @@ int main(int argc, char** argv) {
     app.add_option("--rate", rates, "rube's time steps as rates in Hz (default 30 60 120 240; peers run at 60)");
     app.add_option("--repeats", repeats, "most timed repeats per configuration; the median is kept")
         ->check(CLI::Range(1, 100));
+    app.add_option("--min-repeats", minRepeats,
+                   "timed repeats made of every configuration, even one slower than 4 s a run (default: 3, and 1 "
+                   "for such slow runs; at most --repeats)")
+        ->check(CLI::Range(1, 100));
     app.add_option("--run-limit", runTimeLimit, "seconds before one run is abandoned and flagged as a timeout");
     app.add_flag("--rube-no-sleep", rubeNoSleep,
                  "rube's methods without sleeping islands (sleep_speed 0): what a pile costs while it never rests");
     app.add_option("--rube-workers", rubeWorkers,
                    "rube's worker threads (WorldDef::workers), one or more counts: every rube row is run once per "
-                   "count, the count in the CSV's workers column, processor time beside the wall clock in "
-                   "cpu_ms_per_step (default 1; the chart and the auto table take the first count's rows)")
+                   "count, the counts' timed runs taking turns (1, 2, 1, 2, ...), the count in the CSV's workers "
+                   "column, processor time beside the wall clock in cpu_ms_per_step (default 1; the chart and "
+                   "the auto table take the first count's rows)")
         ->check(CLI::Range(1, rube::kMaxWorkers));
     app.add_flag("--chipmunk-sleep", chipmunkSleep,
                  "Chipmunk with sleeping on (0.5 s idle; Chipmunk's default is off, Box2D's on)");
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (e.get_exit_code() == 0) return app.exit(e); // --help
+        std::string message = e.what();
+        std::replace(message.begin(), message.end(), '\n', ' ');
+        std::cerr << "rube_bench: " << message << " (see rube_bench --help)\n";
+        return 2;
+    }
+    if (minRepeats > repeats) {
+        std::cerr << "rube_bench: --min-repeats " << minRepeats << " is more than --repeats " << repeats
+                  << " (see rube_bench --help)\n";
+        return 2;
+    }
 
     auto& engines = bench::engines();
     std::stable_sort(engines.begin(), engines.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
@@ -173,7 +192,8 @@ int main(int argc, char** argv) {
     bench::RunOptions options;
     options.size.quick = quick;
     options.maxRepeats = quick ? 1 : repeats;
-    options.minRepeats = std::min(options.maxRepeats, 3);
+    options.minRepeats = std::min(options.maxRepeats, minRepeats > 0 ? minRepeats : 3);
+    options.slowRunRepeats = quick ? 1 : std::max(1, minRepeats);
     options.runTimeLimit = runTimeLimit;
     options.rubeSleep = !rubeNoSleep;
     options.chipmunkSleep = chipmunkSleep;
@@ -219,27 +239,30 @@ int main(int argc, char** argv) {
             std::sort(ordered.begin(), ordered.end());
             const std::vector<int> workerCounts = engine.kind == bench::EngineKind::peer ? std::vector<int>{1}
                                                                                          : rubeWorkers;
-            for (const int workers : workerCounts) {
-                sceneOptions.rubeWorkers = workers;
-                std::optional<bench::Row> timedOut;
-                for (const int rate : ordered) {
-                    if (timedOut) {
+            std::optional<bench::Row> timedOut; // the coarsest step that timed out, at any worker count
+            for (const int rate : ordered) {
+                if (timedOut) {
+                    for (const int workers : workerCounts) {
                         bench::Row row = *timedOut;
+                        row.workers = engine.kind == bench::EngineKind::peer ? 1 : workers;
                         row.timeStep = 1.0 / rate;
                         row.steps = static_cast<int>(std::lround(timedOut->steps * timedOut->timeStep * rate));
-                        std::fprintf(stderr, "%-18s %-16s %4d Hz  TIMEOUT (not run: %d Hz timed out)\n",
-                                     scene.name.c_str(), engine.name.c_str(), rate,
+                        std::fprintf(stderr, "%-18s %-16s %4d Hz %2d w  TIMEOUT (not run: %d Hz timed out)\n",
+                                     scene.name.c_str(), engine.name.c_str(), rate, row.workers,
                                      static_cast<int>(std::lround(1.0 / timedOut->timeStep)));
                         rows.push_back(row);
-                        continue;
                     }
-                    const bench::Row row = bench::runScene(scene, engine, 1.0 / rate, sceneOptions);
-                    if (row.lacksJoint) {
-                        std::fprintf(stderr, "%-18s %-16s does not have the scene's joint: not run\n",
-                                     scene.name.c_str(), engine.name.c_str());
-                        break;
-                    }
-                    if (row.timeout) timedOut = row;
+                    continue;
+                }
+                const std::vector<bench::Row> counted = bench::runScene(scene, engine, 1.0 / rate, sceneOptions,
+                                                                        workerCounts);
+                if (counted.empty()) {
+                    std::fprintf(stderr, "%-18s %-16s does not have the scene's joint: not run\n", scene.name.c_str(),
+                                 engine.name.c_str());
+                    break;
+                }
+                for (const bench::Row& row : counted) {
+                    if (row.timeout && !timedOut) timedOut = row;
                     std::fprintf(
                         stderr,
                         "%-18s %-16s %4d Hz %2d w  %10.4f ms/step (cpu %9.4f, last 1 s %9.4f)  error %-12.4g %s%s\n",

@@ -91,47 +91,72 @@ double median(std::vector<double> values) {
 
 } // namespace
 
-Row runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options) {
-    Row row;
-    row.scene = scene.name;
-    row.engine = engine.name;
-    row.peer = engine.kind == EngineKind::peer;
-    row.workers = row.peer ? 1 : options.rubeWorkers;
-    row.errorName = scene.errorName;
-    row.error2Name = scene.error2Name;
-    row.timeStep = timeStep;
-    row.steps = std::max(1, static_cast<int>(std::lround(scene.duration(options.size) / timeStep)));
+std::vector<Row> runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options,
+                          const std::vector<int>& workerCounts) {
+    const bool peer = engine.kind == EngineKind::peer;
+    const std::vector<int> counts = peer || workerCounts.empty() ? std::vector<int>{1} : workerCounts;
+    std::vector<Row> rows(counts.size());
+    std::vector<RunOptions> countOptions(counts.size(), options);
+    for (std::size_t w = 0; w < counts.size(); ++w) {
+        Row& row = rows[w];
+        row.scene = scene.name;
+        row.engine = engine.name;
+        row.peer = peer;
+        row.workers = peer ? 1 : counts[w];
+        countOptions[w].rubeWorkers = row.workers;
+        row.errorName = scene.errorName;
+        row.error2Name = scene.error2Name;
+        row.timeStep = timeStep;
+        row.steps = std::max(1, static_cast<int>(std::lround(scene.duration(options.size) / timeStep)));
+        // Every worker count is measured on its own: the counts must give the same world, and a
+        // measurement shared among them would hide it if one did not.
+        RunOptions measured = countOptions[w];
+        measured.runTimeLimit = std::max(options.runTimeLimit, scene.runTimeLimit);
+        measure(scene, engine, timeStep, measured, row);
+        if (row.lacksJoint) return {};
+    }
 
-    RunOptions sceneOptions = options;
-    sceneOptions.runTimeLimit = std::max(options.runTimeLimit, scene.runTimeLimit);
-    measure(scene, engine, timeStep, sceneOptions, row);
-    if (row.timeout || row.lacksJoint) return row;
-
-    const int lastSteps = std::min(row.steps, std::max(1, static_cast<int>(std::lround(1.0 / timeStep))));
-    std::vector<double> seconds, lastSeconds, cpuSeconds;
-    const auto time = [&] {
-        const Timing t = timedRun(scene, engine, timeStep, options, row.steps, lastSteps);
-        seconds.push_back(t.seconds);
-        lastSeconds.push_back(t.lastSeconds);
-        cpuSeconds.push_back(t.cpuSeconds);
+    // The timed runs go round the worker counts (1, 2, 1, 2, ...), so that each count's median sees
+    // the same spells of a busy machine and their ratio means what it says.
+    const int lastSteps = std::min(rows[0].steps, std::max(1, static_cast<int>(std::lround(1.0 / timeStep))));
+    std::vector<std::vector<double>> seconds(counts.size()), lastSeconds(counts.size()), cpuSeconds(counts.size());
+    const auto round = [&] {
+        for (std::size_t w = 0; w < counts.size(); ++w) {
+            if (rows[w].timeout) continue;
+            const Timing t = timedRun(scene, engine, timeStep, countOptions[w], rows[w].steps, lastSteps);
+            seconds[w].push_back(t.seconds);
+            lastSeconds[w].push_back(t.lastSeconds);
+            cpuSeconds[w].push_back(t.cpuSeconds);
+        }
     };
-    time();
-    const double first = seconds.front();
+    round();
+    // Repeats are decided on the slowest count's first run.
+    double first = 0.0;
+    std::size_t timed = 0;
+    for (std::size_t w = 0; w < counts.size(); ++w)
+        if (!seconds[w].empty()) first = std::max(first, seconds[w].front()), timed = seconds[w].size();
     const auto more = [&] {
-        const int n = static_cast<int>(seconds.size());
-        if (n >= options.maxRepeats || first > options.slowRun) return false;
+        const int n = static_cast<int>(timed);
+        if (n == 0 || n >= options.maxRepeats) return false;
+        if (first > options.slowRun) return n < options.slowRunRepeats;
         return n < options.minRepeats || first * (n + 1) <= options.repeatBudget;
     };
-    while (more()) time();
-    const double whole = median(seconds);
-
-    row.repeats = static_cast<int>(seconds.size());
-    row.msPerStep = 1e3 * whole / row.steps;
-    row.msPerStepLastSecond = 1e3 * median(lastSeconds) / lastSteps;
-    row.cpuMsPerStep = 1e3 * median(cpuSeconds) / row.steps;
-    row.usPerBodyStep = row.bodies > 0 ? 1e6 * whole / (static_cast<double>(row.steps) * row.bodies) : 0.0;
-    row.msPerSimSecond = row.msPerStep / timeStep;
-    return row;
+    while (more()) {
+        round();
+        ++timed;
+    }
+    for (std::size_t w = 0; w < counts.size(); ++w) {
+        Row& row = rows[w];
+        if (row.timeout) continue;
+        const double whole = median(seconds[w]);
+        row.repeats = static_cast<int>(seconds[w].size());
+        row.msPerStep = 1e3 * whole / row.steps;
+        row.msPerStepLastSecond = 1e3 * median(lastSeconds[w]) / lastSteps;
+        row.cpuMsPerStep = 1e3 * median(cpuSeconds[w]) / row.steps;
+        row.usPerBodyStep = row.bodies > 0 ? 1e6 * whole / (static_cast<double>(row.steps) * row.bodies) : 0.0;
+        row.msPerSimSecond = row.msPerStep / timeStep;
+    }
+    return rows;
 }
 
 } // namespace bench

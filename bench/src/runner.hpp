@@ -4,6 +4,7 @@
 #include "scene.hpp"
 
 #include <string>
+#include <vector>
 
 namespace bench {
 
@@ -13,7 +14,9 @@ struct RunOptions {
     int minRepeats = 3;         ///< timed runs always made, unless one run is slower than slowRun
     int maxRepeats = 5;         ///< the timed run is repeated up to this many times; the median is kept
     double repeatBudget = 3.0;  ///< seconds: no repeats past minRepeats once the runs would take this long
-    double slowRun = 4.0;       ///< seconds: a run this slow is timed once (a slow method must not eat the budget)
+    double slowRun =
+        4.0; ///< seconds: a run this slow is timed slowRunRepeats times (a slow method must not eat the budget)
+    int slowRunRepeats = 1;     ///< timed runs of a configuration slower than slowRun (--min-repeats)
     double runTimeLimit = 8.0;  ///< seconds: a measurement run past this is abandoned (flagged "timeout")
     bool rubeSleep = true;      ///< see WorldSpec
     bool chipmunkSleep = false; ///< see WorldSpec
@@ -42,7 +45,10 @@ struct Row {
 };
 
 /// Runs `scene` on `engine`: first a measurement run (the probe sees every step), then the
-/// timed runs, which are the bare step loop with steady_clock around it and nothing else.
-Row runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options);
+/// timed runs, which are the bare step loop with steady_clock around it and nothing else. One row
+/// per count of `workerCounts` (rube's WorldDef::workers; options.rubeWorkers is not read), whose
+/// timed runs take turns; a peer gives one row. No rows when the engine lacks the scene's joint.
+std::vector<Row> runScene(const Scene& scene, const Engine& engine, double timeStep, const RunOptions& options,
+                          const std::vector<int>& workerCounts);
 
 } // namespace bench

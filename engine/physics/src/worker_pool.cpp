@@ -69,16 +69,20 @@ WorkerPool::~WorkerPool() {
 void WorkerPool::work(int self) {
     for (int p = 0; p < phases_; ++p) {
         const std::size_t chunks = chunks_[p];
-        // The own share first, then the others' in turn.
+        // The own share first, then the others' in turn. The chunks this thread did are counted
+        // once, when none is left to claim: one write to the shared counter a phase, not one a
+        // chunk (each write takes the counter's line from the other processor).
+        std::size_t did = 0;
         for (int i = 0; i < workers_; ++i) {
             const int t = (self + i) % workers_;
             for (std::size_t k; claim(p, t, k);) {
                 const std::size_t first = k * chunk_[p];
                 call_(work_, p, first, first + chunk_[p] < size_[p] ? first + chunk_[p] : size_[p]);
-                if (done_[p].value.fetch_add(1, std::memory_order_acq_rel) + 1 == chunks)
-                    done_[p].value.notify_all();
+                ++did;
             }
         }
+        if (did > 0 && done_[p].value.fetch_add(did, std::memory_order_acq_rel) + did == chunks)
+            done_[p].value.notify_all();
         // Every chunk is claimed: wait for the ones still being worked on.
         for (std::size_t done = done_[p].value.load(std::memory_order_acquire); done != chunks;)
             done = awaitChange(done_[p].value, done);

@@ -44,18 +44,26 @@ std::size_t shareStart(std::size_t chunks, int t, int threads) {
 } // namespace
 
 WorkerPool::WorkerPool(int workers)
-    : workers_(workers), next_(static_cast<std::size_t>(kMaxPhases) * static_cast<std::size_t>(workers)) {
+    : workers_(workers), shares_(static_cast<std::size_t>(kMaxPhases) * static_cast<std::size_t>(workers)) {
     threads_.reserve(static_cast<std::size_t>(workers - 1));
     for (int w = 1; w < workers; ++w) threads_.emplace_back([this, w] { loop(w); });
 }
 
-bool WorkerPool::claim(int p, int t, std::size_t& chunk) {
-    std::atomic<std::size_t>& next = next_[static_cast<std::size_t>(p * workers_ + t)].value;
-    const std::size_t end = shareStart(chunks_[p], t + 1, workers_);
-    // A relaxed load first, so a share already used up costs no write to its counter's line.
-    if (next.load(std::memory_order_relaxed) >= end) return false;
-    chunk = next.fetch_add(1, std::memory_order_relaxed);
-    return chunk < end;
+bool WorkerPool::claim(int p, int t, bool own, std::size_t& chunk) {
+    std::atomic<std::uint64_t>& share = shares_[static_cast<std::size_t>(p * workers_ + t)].value;
+    // A relaxed load first, so a share already used up costs no write to its line.
+    std::uint64_t now = share.load(std::memory_order_relaxed);
+    for (;;) {
+        const std::uint64_t front = now & kFrontMask, back = now >> 32;
+        if (front >= back) return false;
+        // The owner takes from the front, a thief from the back: far from where the owner works, so
+        // the two meet other bodies (a colour's contacts are in body order) until the share runs out.
+        const std::uint64_t taken = own ? (back << 32 | (front + 1)) : ((back - 1) << 32 | front);
+        if (share.compare_exchange_weak(now, taken, std::memory_order_relaxed)) {
+            chunk = static_cast<std::size_t>(own ? front : back - 1);
+            return true;
+        }
+    }
 }
 
 WorkerPool::~WorkerPool() {
@@ -75,7 +83,7 @@ void WorkerPool::work(int self) {
         std::size_t did = 0;
         for (int i = 0; i < workers_; ++i) {
             const int t = (self + i) % workers_;
-            for (std::size_t k; claim(p, t, k);) {
+            for (std::size_t k; claim(p, t, i == 0, k);) {
                 const std::size_t first = k * chunk_[p];
                 call_(work_, p, first, first + chunk_[p] < size_[p] ? first + chunk_[p] : size_[p]);
                 ++did;
@@ -98,8 +106,10 @@ void WorkerPool::dispatch(int phases, const std::size_t* sizes, const std::size_
         chunk_[p] = chunks[p];
         chunks_[p] = (sizes[p] + chunks[p] - 1) / chunks[p];
         for (int t = 0; t < workers_; ++t)
-            next_[static_cast<std::size_t>(p * workers_ + t)].value.store(shareStart(chunks_[p], t, workers_),
-                                                                           std::memory_order_relaxed);
+            shares_[static_cast<std::size_t>(p * workers_ + t)].value.store(
+                static_cast<std::uint64_t>(shareStart(chunks_[p], t + 1, workers_)) << 32 |
+                    static_cast<std::uint64_t>(shareStart(chunks_[p], t, workers_)),
+                std::memory_order_relaxed);
         done_[p].value.store(0, std::memory_order_relaxed);
     }
     const std::uint64_t generation = generation_.fetch_add(1, std::memory_order_seq_cst) + 1;

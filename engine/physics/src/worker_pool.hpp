@@ -2,10 +2,11 @@
 // Internal: the World's worker threads (WorldDef::workers). A small persistent pool that runs work
 // in phases: each phase's items are cut into chunks of a fixed length, and no thread starts phase
 // p + 1 before every chunk of phase p is done. Each thread (the caller is thread 0) has a home
-// share of every phase's chunks, the same place in each, and claims chunks there first, then from
-// the others' shares until none is left: the rigid contacts of every colour are in body order, so
-// a thread keeps meeting the same bodies colour after colour and their cache lines stay with its
-// processor, where claiming anywhere sent them back and forth. Which thread does a chunk is left to chance,
+// share of every phase's chunks, the same place in each, and claims chunks there first, front to
+// back, then from the back of the others' shares until none is left: the rigid contacts of every
+// colour are in body order, so a thread keeps meeting the same bodies colour after colour and their
+// cache lines stay with its processor, where claiming anywhere sent them back and forth (and a thief
+// works far from where the owner is working). Which thread does a chunk is left to chance,
 // so a chunk's result must not depend on it: the rigid solver hands out only work whose items
 // write disjoint slots (the contacts of one colour, one body each), which gives the same bits for
 // any split. A worker the machine has not scheduled holds nothing up: the others take its chunks,
@@ -51,8 +52,9 @@ private:
     void dispatch(int phases, const std::size_t* sizes, const std::size_t* chunks, Call call, void* work);
     void work(int self);
     void loop(int self);
-    /// Claims the next chunk of phase p in thread t's share, or returns false when none is left there.
-    bool claim(int p, int t, std::size_t& chunk);
+    /// Claims a chunk of phase p in thread t's share (its first if `own`, else its last), or returns
+    /// false when none is left there.
+    bool claim(int p, int t, bool own, std::size_t& chunk);
 
     int workers_;
     std::vector<std::thread> threads_;
@@ -64,7 +66,12 @@ private:
     struct alignas(64) Counter {
         std::atomic<std::size_t> value{0};
     };
-    std::vector<Counter> next_;  // per phase and thread: the next chunk to claim in the thread's share
+    struct alignas(64) Share {
+        std::atomic<std::uint64_t> value{0};
+    };
+    static constexpr std::uint64_t kFrontMask = 0xffffffffu;
+    std::vector<Share>
+        shares_; // per phase and thread: the chunks left in its share, [front, back) as back << 32 | front
     Counter done_[kMaxPhases];   // per phase: chunks finished
     alignas(64) std::atomic<std::uint64_t> generation_{0}; // bumped to publish a run
     std::atomic<std::uint64_t> closed_{0};                 // the last run whose chunks are all done

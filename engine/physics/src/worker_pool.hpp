@@ -70,8 +70,9 @@ private:
         std::atomic<std::uint64_t> value{0};
     };
     static constexpr std::uint64_t kFrontMask = 0xffffffffu;
-    std::vector<Share>
-        shares_; // per phase and thread: the chunks left in its share, [front, back) as back << 32 | front
+    // Per phase and thread: the chunks left in its share, [front, back) as back << 32 | front (a phase
+    // of 2^32 chunks would need more items than memory holds).
+    std::vector<Share> shares_;
     Counter done_[kMaxPhases];   // per phase: chunks finished
     alignas(64) std::atomic<std::uint64_t> generation_{0}; // bumped to publish a run
     std::atomic<std::uint64_t> closed_{0};                 // the last run whose chunks are all done

@@ -83,6 +83,10 @@ execute_process(COMMAND ${BENCH} --quick --scene pyramid-40 --engine rube-solver
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "rube_bench --rube-workers 1 --rube-workers 2 failed (${result}):\n${log}")
 endif()
+# Its progress says how the second count compares with the first, and that both measured the same.
+if(NOT log MATCHES "pyramid-40 +rube-solver +60 Hz +2 w +[0-9.]+ x faster than 1 \\(wall\\), [0-9.]+ x its processor time, the same measurements")
+  message(FATAL_ERROR "rube_bench --rube-workers 1 --rube-workers 2: no comparison line in its progress:\n${log}")
+endif()
 file(STRINGS ${workersCsv} workerLines)
 list(LENGTH workerLines workerCount)
 if(NOT workerCount EQUAL 3)

@@ -90,6 +90,15 @@ bool writeFailures(const std::string& path, bool quick) {
     return true;
 }
 
+/// Whether two rows measured the same world: every error figure equal, bit for bit (NaN where a
+/// scene has no such figure).
+bool sameMeasurements(const bench::Row& a, const bench::Row& b) {
+    const auto same = [](double x, double y) { return (std::isnan(x) && std::isnan(y)) || x == y; };
+    return same(a.metrics.error, b.metrics.error) && same(a.metrics.error2, b.metrics.error2) &&
+           same(a.metrics.overlap, b.metrics.overlap) && same(a.metrics.momentum, b.metrics.momentum) &&
+           a.metrics.tunnels == b.metrics.tunnels && a.escapes == b.escapes && a.nonFinite == b.nonFinite;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -270,6 +279,19 @@ int main(int argc, char** argv) {
                         row.msPerStepLastSecond, row.metrics.tunnels >= 0 ? row.metrics.tunnels : row.metrics.error,
                         row.timeout ? " TIMEOUT" : "", row.nonFinite ? " NaN" : "");
                     rows.push_back(row);
+                }
+                // Several worker counts: how much faster each is than the first, and whether it
+                // measured the same world (it must: the counts give the same bits).
+                for (std::size_t w = 1; w < counted.size(); ++w) {
+                    const bench::Row &base = counted.front(), &row = counted[w];
+                    if (base.timeout || row.timeout || row.msPerStep <= 0.0 || base.cpuMsPerStep <= 0.0) continue;
+                    std::fprintf(stderr,
+                                 "%-18s %-16s %4d Hz %2d w  %.2f x faster than %d (wall), %.2f x its processor "
+                                 "time, %s\n",
+                                 scene.name.c_str(), engine.name.c_str(), rate, row.workers,
+                                 base.msPerStep / row.msPerStep, base.workers, row.cpuMsPerStep / base.cpuMsPerStep,
+                                 sameMeasurements(base, row) ? "the same measurements"
+                                                             : "OTHER MEASUREMENTS (the counts must agree)");
                 }
             }
         }

@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
                 if (timedOut) {
                     for (const int workers : workerCounts) {
                         bench::Row row = *timedOut;
-                        row.workers = engine.kind == bench::EngineKind::peer ? 1 : workers;
+                        row.workers = workers; // workerCounts is {1} for a peer
                         row.timeStep = 1.0 / rate;
                         row.steps = static_cast<int>(std::lround(timedOut->steps * timedOut->timeStep * rate));
                         std::fprintf(stderr, "%-18s %-16s %4d Hz %2d w  TIMEOUT (not run: %d Hz timed out)\n",

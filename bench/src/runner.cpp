@@ -129,22 +129,19 @@ std::vector<Row> runScene(const Scene& scene, const Engine& engine, double timeS
             cpuSeconds[w].push_back(t.cpuSeconds);
         }
     };
+    if (std::all_of(rows.begin(), rows.end(), [](const Row& r) { return r.timeout; })) return rows;
     round();
     // Repeats are decided on the slowest count's first run.
     double first = 0.0;
-    std::size_t timed = 0;
-    for (std::size_t w = 0; w < counts.size(); ++w)
-        if (!seconds[w].empty()) first = std::max(first, seconds[w].front()), timed = seconds[w].size();
+    for (const std::vector<double>& s : seconds)
+        if (!s.empty()) first = std::max(first, s.front());
+    int rounds = 1;
     const auto more = [&] {
-        const int n = static_cast<int>(timed);
-        if (n == 0 || n >= options.maxRepeats) return false;
-        if (first > options.slowRun) return n < options.slowRunRepeats;
-        return n < options.minRepeats || first * (n + 1) <= options.repeatBudget;
+        if (rounds >= options.maxRepeats) return false;
+        if (first > options.slowRun) return rounds < options.slowRunRepeats;
+        return rounds < options.minRepeats || first * (rounds + 1) <= options.repeatBudget;
     };
-    while (more()) {
-        round();
-        ++timed;
-    }
+    for (; more(); ++rounds) round();
     for (std::size_t w = 0; w < counts.size(); ++w) {
         Row& row = rows[w];
         if (row.timeout) continue;

@@ -14,8 +14,7 @@ struct RunOptions {
     int minRepeats = 3;         ///< timed runs always made, unless one run is slower than slowRun
     int maxRepeats = 5;         ///< the timed run is repeated up to this many times; the median is kept
     double repeatBudget = 3.0;  ///< seconds: no repeats past minRepeats once the runs would take this long
-    double slowRun =
-        4.0; ///< seconds: a run this slow is timed slowRunRepeats times (a slow method must not eat the budget)
+    double slowRun = 4.0;       ///< seconds: a run this slow is timed slowRunRepeats times, not minRepeats
     int slowRunRepeats = 1;     ///< timed runs of a configuration slower than slowRun (--min-repeats)
     double runTimeLimit = 8.0;  ///< seconds: a measurement run past this is abandoned (flagged "timeout")
     bool rubeSleep = true;      ///< see WorldSpec

@@ -30,10 +30,6 @@ BoundingBox fatten(const BoundingBox& b) {
     return {{b.min.x - m, b.min.y - m}, {b.max.x + m, b.max.y + m}};
 }
 
-} // namespace
-
-namespace {
-
 /// A cell's key: its column and row, each non-negative and below 2^32, in one sortable number.
 std::uint64_t cellKey(std::int64_t x, std::int64_t y) {
     return static_cast<std::uint64_t>(x) << 32 | static_cast<std::uint64_t>(y);

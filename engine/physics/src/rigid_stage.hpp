@@ -121,12 +121,12 @@ private:
     std::vector<RoundedPolygon> shapes_;   // per rigid body: its shape at the step's start
     std::vector<std::uint8_t> fast_;       // per rigid body: moved further than its half thickness (sweep)
     std::vector<std::int8_t> struckPoint_; // per contact: its point that struck, or none (recordImpacts)
-    std::vector<Box> boxes_;
+    std::vector<Box> boxes_;               // per rigid body: the box it may reach this step
     std::vector<Box> circleBoxes_;    // per circle: the box it may reach this step
+    std::vector<double> circleReach_; // per circle: its speculative margin for the step
     std::vector<RoundedPolygon> segmentShapes_; // per segment: its shape this step
     std::vector<double> segmentReach_;          // per segment: how far it moves this step, m
     std::vector<Box> segmentBoxes_;             // per segment: the box it may reach this step
-    std::vector<double> circleReach_; // per circle: its speculative margin for the step
     RigidPairFinder pairFinder_;
     std::vector<RigidPair> pairs_;
     std::vector<Manifold> manifolds_; // per pair of pairs_: its manifold (none when neither side moves)

@@ -21,6 +21,15 @@ std::uint64_t pairKey(const RigidContact& c) {
 
 } // namespace
 
+template <class Take>
+void RigidContactCache::forEachEntry(const RigidContact& c, Take take) {
+    const std::uint64_t pair = pairKey(c);
+    for (int k = 0; k < c.count; ++k) {
+        const RigidContactPoint& p = c.points[k];
+        if (p.normalImpulse > 0.0) take(Entry{pair, p.feature, p.normalImpulse, p.tangentImpulse});
+    }
+}
+
 void RigidContactCache::apply(std::span<RigidContact> contacts, WorkerPool* pool) const {
     if (entries_.empty()) return;
     // Each contact looks itself up and writes only itself: any split among the workers, the same impulses.
@@ -91,13 +100,7 @@ void RigidContactCache::store(std::span<const RigidContact> contacts, std::span<
     if (!listOrder.empty() && listOrder.size() == contacts.size() && storeInListOrder(contacts, listOrder, pool))
         return;
     entries_.clear();
-    for (const RigidContact& c : contacts) {
-        const std::uint64_t pair = pairKey(c);
-        for (int k = 0; k < c.count; ++k) {
-            const RigidContactPoint& p = c.points[k];
-            if (p.normalImpulse > 0.0) entries_.push_back({pair, p.feature, p.normalImpulse, p.tangentImpulse});
-        }
-    }
+    for (const RigidContact& c : contacts) forEachEntry(c, [&](const Entry& e) { entries_.push_back(e); });
     std::sort(entries_.begin(), entries_.end(), keyLess);
 }
 
@@ -115,10 +118,8 @@ bool RigidContactCache::storeInListOrder(std::span<const RigidContact> contacts,
     chunkAscending_.assign(chunkCount, 1);
     const auto count = [&](std::size_t first, std::size_t last) {
         std::size_t entries = 0;
-        for (std::size_t visit = first; visit < last; ++visit) {
-            const RigidContact& c = at(visit);
-            for (int k = 0; k < c.count; ++k) entries += c.points[k].normalImpulse > 0.0 ? 1 : 0;
-        }
+        for (std::size_t visit = first; visit < last; ++visit)
+            forEachEntry(at(visit), [&](const Entry&) { ++entries; });
         chunkEntries_[first / kStoreChunk] = entries;
     };
     const auto fill = [&](std::size_t first, std::size_t last) {
@@ -126,14 +127,8 @@ bool RigidContactCache::storeInListOrder(std::span<const RigidContact> contacts,
         std::size_t out = 0;
         for (std::size_t j = 0; j < chunk; ++j) out += chunkEntries_[j];
         const std::size_t begin = out;
-        for (std::size_t visit = first; visit < last; ++visit) {
-            const RigidContact& c = at(visit);
-            const std::uint64_t pair = pairKey(c);
-            for (int k = 0; k < c.count; ++k) {
-                const RigidContactPoint& p = c.points[k];
-                if (p.normalImpulse > 0.0) entries_[out++] = {pair, p.feature, p.normalImpulse, p.tangentImpulse};
-            }
-        }
+        for (std::size_t visit = first; visit < last; ++visit)
+            forEachEntry(at(visit), [&](const Entry& e) { entries_[out++] = e; });
         for (std::size_t k = begin + 1; k < out; ++k)
             if (entries_[k - 1].pair == entries_[k].pair && keyLess(entries_[k], entries_[k - 1]))
                 std::swap(entries_[k - 1], entries_[k]);

@@ -38,6 +38,9 @@ private:
         double normalImpulse = 0.0;
         double tangentImpulse = 0.0;
     };
+    /// Calls take(entry) for each point of `c` that pushed (the points the table remembers), in order.
+    template <class Take>
+    static void forEachEntry(const RigidContact& c, Take take);
     /// The table's order: by pair, then feature.
     static bool keyLess(const Entry& a, const Entry& b) {
         return a.pair != b.pair ? a.pair < b.pair : a.feature < b.feature;

@@ -44,10 +44,19 @@ struct RigidBlockPoint {
 /// kBlockLanes contacts of one colour (or one contact of the overflow and stand-ins).
 struct RigidBlock {
     Lanes normalX{}, normalY{}, tangentX{}, tangentY{}, friction{};
+    /// The bodies' inverse masses and inertias, which hold for the step: packed once, not gathered
+    /// from four bodies each sweep (a stand-in's are 0).
+    Lanes inverseMassA{}, inverseMassB{}, inverseInertiaA{}, inverseInertiaB{};
+    /// Which lanes have point j (all bits set: count > j), and which of those rub (friction > 0): the
+    /// sweeps' masks, made once a step instead of lane by lane in every sweep.
+    Lanes pointMask[2]{}, rubbingMask[2]{};
     RigidBlockPoint points[2];
     int bodyA[kBlockLanes] = {}, bodyB[kBlockLanes] = {}, count[kBlockLanes] = {};
     int contact[kBlockLanes] = {}; ///< the lane's place in the contact list; -1: a stand-in that writes nothing
     bool againstFixed[kBlockLanes] = {};
+    /// The masks above as bits (lane i: bit i), and which lanes may write their body A or B: a real
+    /// lane whose body can move (movableBody).
+    unsigned pointLanes[2] = {}, rubbingLanes[2] = {}, writesA = 0, writesB = 0;
 };
 
 /// The step's blocks, colour after colour: a colour of n contacts fills n / kBlockLanes blocks in
@@ -55,9 +64,10 @@ struct RigidBlock {
 /// its own, so the overflow is solved one contact after the other as before.
 class RigidBlocks {
 public:
-    /// Packs `contacts`, coloured by `colours`, with their current impulses (the arms are
-    /// refreshBlockArms'), the blocks shared among `pool`'s workers when given.
-    void pack(std::span<const RigidContact> contacts, const RigidColours& colours, WorkerPool* pool = nullptr);
+    /// Packs `contacts`, coloured by `colours`, with their current impulses and their `bodies`'
+    /// masses (the arms are refreshBlockArms'), the blocks shared among `pool`'s workers when given.
+    void pack(std::span<const RigidContact> contacts, const RigidColours& colours, std::span<const RigidState> bodies,
+              WorkerPool* pool = nullptr);
     /// Writes the arms, impulses and what the points delivered back into `contacts` (the list packed).
     void unpack(std::span<RigidContact> contacts, WorkerPool* pool = nullptr) const;
     /// Blocks [start(c), start(c + 1)) hold colour c; colour kRigidColours is the overflow.
@@ -94,12 +104,13 @@ void sweepBlocks(WorkerPool* pool, const RigidBlocks& blocks, Sweep sweep) {
     pool->run(kRigidColours + 1, sizes, chunks, work);
 }
 
-/// Which code the passes below run: the best this processor runs (AVX where it has it), or only what
-/// the build targets (SSE2 on x86-64). The same bits either way; the tests hold both to the
-/// one-contact-at-a-time forms.
-enum class LaneCode { best, portable };
-/// Whether LaneCode::best is AVX here.
+/// Which code the passes below run: the best this processor runs (AVX-512VL's registers where it
+/// has them, else AVX), AVX (where the processor has it), or only what the build targets (SSE2 on
+/// x86-64). The same bits every way; the tests hold each to the one-contact-at-a-time forms.
+enum class LaneCode { best, avx, portable };
+/// Whether LaneCode::avx is AVX here, and whether LaneCode::best is AVX-512VL.
 bool blocksRunAvx();
+bool blocksRunAvx512();
 
 /// refreshArms for the blocks: every lane's anchors turned with its bodies as they stand now.
 void refreshBlockArms(std::span<RigidBlock> blocks, std::span<RigidState> bodies, LaneCode code = LaneCode::best);

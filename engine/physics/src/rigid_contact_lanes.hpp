@@ -78,6 +78,16 @@ struct Slice {
     [[gnu::always_inline]] void set(Lanes& field, V v) const {
         std::memcpy(reinterpret_cast<double*>(&field) + base, &v, sizeof v);
     }
+    /// The slice of a mask packed as Lanes (RigidBlock::pointMask and the like).
+    [[gnu::always_inline]] MaskOf<V> mask(const Lanes& field) const {
+        MaskOf<V> m;
+        std::memcpy(&m, reinterpret_cast<const double*>(&field) + base, sizeof m);
+        return m;
+    }
+    /// The slice's lanes of a block's lane bits (RigidBlock::pointLanes and the like).
+    [[gnu::always_inline]] unsigned bits(unsigned lanes) const { return (lanes >> base) & ((1u << kWidth<V>)-1); }
+    [[gnu::always_inline]] bool all(unsigned lanes) const { return bits(lanes) == (1u << kWidth<V>)-1; }
+    [[gnu::always_inline]] bool lane(unsigned lanes, int i) const { return (lanes >> (base + i)) & 1u; }
 };
 
 /// The bodies of one side of a slice's contacts, and the slice's largest point count.
@@ -90,8 +100,9 @@ struct SliceBodies {
         for (int i = 0; i < kWidth<V>; ++i) {
             a[i] = &bodies[static_cast<std::size_t>(k.bodyA[base + i])];
             b[i] = &bodies[static_cast<std::size_t>(k.bodyB[base + i])];
-            count = k.count[base + i] > count ? k.count[base + i] : count;
         }
+        const Slice<V> at{base};
+        count = at.bits(k.pointLanes[1]) != 0 ? 2 : at.bits(k.pointLanes[0]) != 0 ? 1 : 0;
     }
 };
 
@@ -114,10 +125,10 @@ template <class V>
 template <class V>
 struct LaneBody {
     V vx, vy, omega, inverseMass, inverseInertia;
-    [[gnu::always_inline]] explicit LaneBody(RigidState* const* s)
+    /// The velocities gathered from the bodies, the masses from the block (RigidBlock::inverseMassA).
+    [[gnu::always_inline]] LaneBody(RigidState* const* s, V inverseMass_, V inverseInertia_)
         : vx(gather<V>(s, &RigidState::velocity, &Vec2::x)), vy(gather<V>(s, &RigidState::velocity, &Vec2::y)),
-          omega(gather<V>(s, &RigidState::omega)), inverseMass(gather<V>(s, &RigidState::inverseMass)),
-          inverseInertia(gather<V>(s, &RigidState::inverseInertia)) {}
+          omega(gather<V>(s, &RigidState::omega)), inverseMass(inverseMass_), inverseInertia(inverseInertia_) {}
     /// v += p / m, omega += (r x p) / I, in the lanes of `apply` only (applyImpulse, lane-wise);
     /// `all` says every lane applies, and the selects are skipped (the same bits).
     [[gnu::always_inline]] void apply(bool all, MaskOf<V> apply, V rx, V ry, V px, V py) {
@@ -127,8 +138,17 @@ struct LaneBody {
         vy = all ? y : (apply ? y : vy);
         omega = all ? w : (apply ? w : omega);
     }
+    /// apply(all, apply, rx, ry, -px, -py) without the negations: v + (-p) / m is v - p / m, and
+    /// r x (-p) = -(r x p), since rounding is symmetric in sign (the same bits; a NaN's sign aside).
+    [[gnu::always_inline]] void applyOpposite(bool all, MaskOf<V> apply, V rx, V ry, V px, V py) {
+        const V x = vx - px * inverseMass, y = vy - py * inverseMass;
+        const V w = omega - inverseInertia * (rx * py - ry * px);
+        vx = all ? x : (apply ? x : vx);
+        vy = all ? y : (apply ? y : vy);
+        omega = all ? w : (apply ? w : omega);
+    }
+    /// Into a body the lane may write (RigidBlock::writesA, writesB: movableBody).
     [[gnu::always_inline]] void store(RigidState& s, int lane) const {
-        if (!movableBody(s)) return;
         s.velocity = {vx[lane], vy[lane]};
         s.omega = omega[lane];
     }
@@ -139,7 +159,8 @@ struct LaneBody {
 template <class V>
 [[gnu::always_inline]] inline V alongPoint(const LaneBody<V>& a, const LaneBody<V>& b, V rAx, V rAy, V rBx, V rBy, V dx,
                                            V dy) {
-    return dx * ((b.vx + -rBy * b.omega) - (a.vx + -rAy * a.omega)) +
+    // v + (-ry) omega is v - ry omega: the same bits (a NaN's sign aside), one negation fewer.
+    return dx * ((b.vx - rBy * b.omega) - (a.vx - rAy * a.omega)) +
            dy * ((b.vy + rBx * b.omega) - (a.vy + rAx * a.omega));
 }
 
@@ -173,27 +194,29 @@ template <class V>
     constexpr int W = kWidth<V>;
     const Slice<V> at{base};
     const SliceBodies<V> s(k, base, bodies);
-    const LaneBody<V> a(s.a), b(s.b);
-    const V nx = at(k.normalX), ny = at(k.normalY), tx = at(k.tangentX), ty = at(k.tangentY);
     const V zero = splat<V>(0.0);
+    // Real points that have not pushed yet: !(maxNormalImpulse > 0), NaN included. Resting contacts
+    // have all pushed, and then the bodies are not even gathered.
+    MaskOf<V> measured[2] = {};
+    bool anyPoint[2] = {false, false};
     for (int j = 0; j < s.count; ++j) {
+        measured[j] = at.mask(k.pointMask[j]) & ~(at(k.points[j].maxNormalImpulse) > zero);
+        for (int i = 0; i < W; ++i) anyPoint[j] = anyPoint[j] || measured[j][i] != 0;
+    }
+    if (!anyPoint[0] && !anyPoint[1]) return;
+    const LaneBody<V> a(s.a, at(k.inverseMassA), at(k.inverseInertiaA)),
+        b(s.b, at(k.inverseMassB), at(k.inverseInertiaB));
+    const V nx = at(k.normalX), ny = at(k.normalY), tx = at(k.tangentX), ty = at(k.tangentY);
+    for (int j = 0; j < s.count; ++j) {
+        if (!anyPoint[j]) continue;
         const RigidBlockPoint& p = k.points[j];
-        bool measured[W];
-        bool any = false;
-        for (int i = 0; i < W; ++i) {
-            measured[i] = j < k.count[base + i] && !(p.maxNormalImpulse[base + i] > 0.0);
-            any = any || measured[i];
-        }
-        if (!any) continue;
         const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
         V vn = alongPoint(a, b, rAx, rAy, rBx, rBy, nx, ny);
         const V ka = a.inverseInertia * (rAx * ny - rAy * nx), kb = b.inverseInertia * (rBx * ny - rBy * nx);
         for (int q = 0; q < s.count; ++q) {
             const RigidBlockPoint& o = k.points[q];
-            bool real[W];
-            for (int i = 0; i < W; ++i) real[i] = q < k.count[base + i];
             const V deliveredNormal = at(o.deliveredNormal), deliveredTangent = at(o.deliveredTangent);
-            const MaskOf<V> takes = maskOf<V>(real) & ~((deliveredNormal == zero) & (deliveredTangent == zero));
+            const MaskOf<V> takes = at.mask(k.pointMask[q]) & ~((deliveredNormal == zero) & (deliveredTangent == zero));
             const V oAx = at(o.armAx), oAy = at(o.armAy), oBx = at(o.armBx), oBy = at(o.armBy);
             const V crossAn = oAx * ny - oAy * nx, crossBn = oBx * ny - oBy * nx;
             const V crossAt = oAx * ty - oAy * tx, crossBt = oBx * ty - oBy * tx;
@@ -202,7 +225,7 @@ template <class V>
             vn = takes ? afterTangent : vn;
         }
         for (int i = 0; i < W; ++i) {
-            if (!measured[i]) continue;
+            if (measured[j][i] == 0) continue;
             RigidContactPoint& point = contacts[static_cast<std::size_t>(k.contact[base + i])].points[j];
             point.approachSpeed = -vn[i];
             point.touchSubstep = substep;
@@ -219,21 +242,20 @@ template <class V>
     const Slice<V> at{base};
     const SliceBodies<V> s(k, base, bodies);
     bool warm[W];
-    for (int i = 0; i < W; ++i)
+    bool allWarm = true;
+    for (int i = 0; i < W; ++i) {
         warm[i] = !(std::abs(s.a[i]->omega) * h > maxTurn || std::abs(s.b[i]->omega) * h > maxTurn);
-    LaneBody<V> a(s.a), b(s.b);
+        allWarm = allWarm && warm[i];
+    }
+    const MaskOf<V> warmLanes = maskOf<V>(warm);
+    LaneBody<V> a(s.a, at(k.inverseMassA), at(k.inverseInertiaA)), b(s.b, at(k.inverseMassB), at(k.inverseInertiaB));
     const V nx = at(k.normalX), ny = at(k.normalY), tx = at(k.tangentX), ty = at(k.tangentY);
     const V zero = splat<V>(0.0);
     for (int j = 0; j < s.count; ++j) {
         RigidBlockPoint& p = k.points[j];
-        bool on[W], cold[W];
-        bool all = true;
-        for (int i = 0; i < W; ++i) {
-            on[i] = j < k.count[base + i] && warm[i];
-            cold[i] = j < k.count[base + i] && !warm[i];
-            all = all && on[i];
-        }
-        const MaskOf<V> has = maskOf<V>(on), zeroed = maskOf<V>(cold);
+        const MaskOf<V> real = at.mask(k.pointMask[j]);
+        const MaskOf<V> has = real & warmLanes, zeroed = real & ~warmLanes;
+        const bool all = allWarm && at.all(k.pointLanes[j]);
         const V normalImpulse = at(p.normalImpulse), tangentImpulse = at(p.tangentImpulse);
         // impulse = n lambda_n + t lambda_t; A takes -impulse at its arm, B +impulse at its own.
         const V ix = nx * normalImpulse + tx * tangentImpulse;
@@ -241,16 +263,16 @@ template <class V>
         const V deliveredNormal = at(p.deliveredNormal), deliveredTangent = at(p.deliveredTangent);
         at.set(p.deliveredNormal, has ? deliveredNormal + normalImpulse : deliveredNormal);
         at.set(p.deliveredTangent, has ? deliveredTangent + tangentImpulse : deliveredTangent);
-        a.apply(all, has, at(p.armAx), at(p.armAy), -ix, -iy);
+        a.applyOpposite(all, has, at(p.armAx), at(p.armAy), ix, iy);
         b.apply(all, has, at(p.armBx), at(p.armBy), ix, iy);
         at.set(p.normalImpulse, zeroed ? zero : normalImpulse);
         at.set(p.tangentImpulse, zeroed ? zero : tangentImpulse);
     }
     // As in the solve: a body that cannot move is never written, so a colour may be shared among workers.
     for (int i = 0; i < W; ++i) {
-        if (k.contact[base + i] < 0 || !warm[i]) continue;
-        a.store(*s.a[i], i);
-        b.store(*s.b[i], i);
+        if (!warm[i]) continue;
+        if (at.lane(k.writesA, i)) a.store(*s.a[i], i);
+        if (at.lane(k.writesB, i)) b.store(*s.b[i], i);
     }
 }
 
@@ -263,13 +285,8 @@ template <class V>
     constexpr int W = kWidth<V>;
     const Slice<V> at{base};
     const SliceBodies<V> s(k, base, bodies);
-    bool rubs[W];
-    bool anyRubs = false;
-    for (int i = 0; i < W; ++i) {
-        rubs[i] = k.friction[base + i] > 0.0;
-        anyRubs = anyRubs || rubs[i];
-    }
-    LaneBody<V> a(s.a), b(s.b);
+    const bool anyRubs = at.bits(k.rubbingLanes[0] | k.rubbingLanes[1]) != 0;
+    LaneBody<V> a(s.a, at(k.inverseMassA), at(k.inverseInertiaA)), b(s.b, at(k.inverseMassB), at(k.inverseInertiaB));
     const V zero = splat<V>(0.0), one = splat<V>(1.0);
     const V nx = at(k.normalX), ny = at(k.normalY);
     const V dpx = gather<V>(s.b, &RigidState::displacement, &Vec2::x) -
@@ -287,13 +304,8 @@ template <class V>
     const V invHw = splat<V>(invH), pushLimit = splat<V>(-softness.maxPushSpeed);
     for (int j = 0; j < s.count; ++j) {
         RigidBlockPoint& p = k.points[j];
-        bool on[W];
-        bool all = true;
-        for (int i = 0; i < W; ++i) {
-            on[i] = j < k.count[base + i];
-            all = all && on[i];
-        }
-        const MaskOf<V> has = maskOf<V>(on);
+        const bool all = at.all(k.pointLanes[j]);
+        const MaskOf<V> has = at.mask(k.pointMask[j]);
         const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
         const V gap = nx * ((dpx + rBx) - rAx) + ny * ((dpy + rBy) - rAy) + at(p.baseSeparation);
         const MaskOf<V> speculative = gap > zero;
@@ -307,9 +319,9 @@ template <class V>
         const V lambda = -at(p.normalMass) * massScale * (vn + bias) - impulseScale * old;
         const V total = maxOf(old + lambda, zero);
         const V delta = total - old;
-        const V minus = -delta;
-        a.apply(all, has, rAx, rAy, nx * minus, ny * minus);
-        b.apply(all, has, rBx, rBy, nx * delta, ny * delta);
+        const V px = nx * delta, py = ny * delta;
+        a.applyOpposite(all, has, rAx, rAy, px, py);
+        b.apply(all, has, rBx, rBy, px, py);
         at.set(p.normalImpulse, total);
         at.set(p.deliveredNormal, at(p.deliveredNormal) + delta);
         at.set(p.maxNormalImpulse, maxOf(at(p.maxNormalImpulse), total));
@@ -318,22 +330,17 @@ template <class V>
         const V tx = at(k.tangentX), ty = at(k.tangentY), friction = at(k.friction);
         for (int j = 0; j < s.count; ++j) {
             RigidBlockPoint& p = k.points[j];
-            bool on[W];
-            bool all = true;
-            for (int i = 0; i < W; ++i) {
-                on[i] = rubs[i] && j < k.count[base + i];
-                all = all && on[i];
-            }
-            const MaskOf<V> has = maskOf<V>(on);
+            const bool all = at.all(k.rubbingLanes[j]);
+            const MaskOf<V> has = at.mask(k.rubbingMask[j]);
             const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
             const V vt = alongPoint(a, b, rAx, rAy, rBx, rBy, tx, ty);
             const V limit = friction * at(p.normalImpulse);
             const V old = at(p.tangentImpulse);
             const V total = minOf(maxOf(old - at(p.tangentMass) * vt, -limit), limit);
             const V delta = total - old;
-            const V minus = -delta;
-            a.apply(all, has, rAx, rAy, tx * minus, ty * minus);
-            b.apply(all, has, rBx, rBy, tx * delta, ty * delta);
+            const V px = tx * delta, py = ty * delta;
+            a.applyOpposite(all, has, rAx, rAy, px, py);
+            b.apply(all, has, rBx, rBy, px, py);
             // A lane without friction keeps its impulses as the scalar sweep leaves them.
             const V delivered = at(p.deliveredTangent);
             at.set(p.tangentImpulse, has ? total : old);
@@ -341,9 +348,8 @@ template <class V>
         }
     }
     for (int i = 0; i < W; ++i) {
-        if (k.contact[base + i] < 0) continue;
-        a.store(*s.a[i], i);
-        b.store(*s.b[i], i);
+        if (at.lane(k.writesA, i)) a.store(*s.a[i], i);
+        if (at.lane(k.writesB, i)) b.store(*s.b[i], i);
     }
 }
 

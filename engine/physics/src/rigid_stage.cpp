@@ -341,7 +341,7 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
         }
     });
     cache_.apply(contacts_, pool_);
-    blocks_.pack(contacts_, colours_, pool_);
+    blocks_.pack(contacts_, colours_, states_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }
 

@@ -327,20 +327,23 @@ void RigidStage::bind(std::span<SolverBody> others, std::span<double> omega, std
     }
     // The contacts, listed in findContacts, go straight to their places in colour order, copied by
     // the workers from where they were made (the slots are kept between steps, so a list as long as
-    // the last costs no construction); then each point gets last step's impulses back.
+    // the last costs no construction), and each point gets last step's impulses back. The lookups
+    // go in the list's order, which is the cache's key order: each gallops on from the last, where
+    // in colour order it would start over (the impulses are the same either way).
     colours_.assign(listedEnds_, states_);
     const std::span<const int> place = colours_.placeOfListed();
     contacts_.resize(listed_.size());
     forShares(pool_, listed_.size(), kPairChunk, [&](std::size_t first, std::size_t last) {
+        RigidContactCache::Lookup lookup(cache_);
         for (std::size_t k = first; k < last; ++k) {
             RigidContact& c = contacts_[static_cast<std::size_t>(place[k])];
             c = listedContact(k);
             c.bodyA = listedEnds_[k].bodyA;
             c.bodyB = listedEnds_[k].bodyB;
             chooseSoftness(std::span(&c, 1), states_);
+            lookup.apply(c);
         }
     });
-    cache_.apply(contacts_, pool_);
     blocks_.pack(contacts_, colours_, states_, pool_);
     refreshBlockArms(blocks_.all(), states_);
 }

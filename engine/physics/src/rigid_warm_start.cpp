@@ -33,38 +33,35 @@ void RigidContactCache::forEachEntry(const RigidContact& c, Take take) {
 void RigidContactCache::apply(std::span<RigidContact> contacts, WorkerPool* pool) const {
     if (entries_.empty()) return;
     // Each contact looks itself up and writes only itself: any split among the workers, the same impulses.
-    forShares(pool, contacts.size(), kApplyChunk,
-              [&](std::size_t first, std::size_t last) { applyTo(contacts.subspan(first, last - first)); });
+    forShares(pool, contacts.size(), kApplyChunk, [&](std::size_t first, std::size_t last) {
+        Lookup lookup(*this);
+        for (std::size_t k = first; k < last; ++k) lookup.apply(contacts[k]);
+    });
 }
 
-void RigidContactCache::applyTo(std::span<RigidContact> contacts) const {
+void RigidContactCache::Lookup::apply(RigidContact& c) {
+    if (entries_.empty()) return;
     const auto before = [](const Entry& e, const std::tuple<std::uint64_t, std::uint32_t>& key) {
         return std::make_tuple(e.pair, e.feature) < key;
     };
-    // Contacts come mostly in key order (body by body), so each search gallops on from where the last
-    // one ended (doubling steps, then a binary search within the last step): the same first entry not
-    // before the key as a search over the whole table, found in a few steps.
-    std::size_t from = 0;
-    for (RigidContact& c : contacts) {
-        const std::uint64_t pair = pairKey(c);
-        for (int k = 0; k < c.count; ++k) {
-            RigidContactPoint& p = c.points[k];
-            const auto key = std::make_tuple(pair, p.feature);
-            if (from > 0 && !before(entries_[from - 1], key)) from = 0; // behind the last one: search all
-            std::size_t step = 1, lo = from;
-            while (lo + step <= entries_.size() && before(entries_[lo + step - 1], key)) {
-                lo += step;
-                step *= 2;
-            }
-            const auto first = entries_.begin() + static_cast<std::ptrdiff_t>(lo);
-            const auto last = entries_.begin() + static_cast<std::ptrdiff_t>(std::min(lo + step, entries_.size()));
-            const auto it = std::lower_bound(first, last, key, before);
-            from = static_cast<std::size_t>(it - entries_.begin());
-            if (it == entries_.end() || it->pair != pair || it->feature != p.feature) continue;
-            p.normalImpulse = it->normalImpulse;
-            p.tangentImpulse = it->tangentImpulse;
-            p.carried = it->normalImpulse > 0.0;
+    const std::uint64_t pair = pairKey(c);
+    for (int k = 0; k < c.count; ++k) {
+        RigidContactPoint& p = c.points[k];
+        const auto key = std::make_tuple(pair, p.feature);
+        if (from_ > 0 && !before(entries_[from_ - 1], key)) from_ = 0; // behind the last one: search all
+        std::size_t step = 1, lo = from_;
+        while (lo + step <= entries_.size() && before(entries_[lo + step - 1], key)) {
+            lo += step;
+            step *= 2;
         }
+        const auto first = entries_.begin() + static_cast<std::ptrdiff_t>(lo);
+        const auto last = entries_.begin() + static_cast<std::ptrdiff_t>(std::min(lo + step, entries_.size()));
+        const auto it = std::lower_bound(first, last, key, before);
+        from_ = static_cast<std::size_t>(it - entries_.begin());
+        if (it == entries_.end() || it->pair != pair || it->feature != p.feature) continue;
+        p.normalImpulse = it->normalImpulse;
+        p.tangentImpulse = it->tangentImpulse;
+        p.carried = it->normalImpulse > 0.0;
     }
 }
 

@@ -30,9 +30,12 @@ void mergeClippedExtent(Vec2 p, Vec2 q, double lo, double hi, double& xMin, doub
 } // namespace
 
 void BroadphaseGrid::cellRange(const BoundingBox& box, int& x0, int& y0, int& x1, int& y1) const {
-    // Clamp in double before converting: a far-away body must not overflow the int.
+    // clamp(floor(x), 0, n - 1) without floor, which is a library call on the build's x86-64 target:
+    // for 0 <= x < n - 1 truncation is floor, and both ends are compared in double, so a far-away
+    // body never overflows the int (a NaN, which the old form cast undefined, goes to cell 0).
     const auto cell = [this](double v, int n) {
-        return static_cast<int>(std::clamp(std::floor(v * invCellSize_), 0.0, static_cast<double>(n - 1)));
+        const double x = v * invCellSize_;
+        return x >= static_cast<double>(n - 1) ? n - 1 : x > 0.0 ? static_cast<int>(x) : 0;
     };
     x0 = cell(box.min.x - origin_.x, nx_);
     x1 = cell(box.max.x - origin_.x, nx_);

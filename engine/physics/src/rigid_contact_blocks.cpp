@@ -52,7 +52,6 @@ void packLane(RigidBlock& k, int lane, const RigidContact& c, int index, std::sp
     k.friction[lane] = c.friction;
     k.bodyA[lane] = c.bodyA;
     k.bodyB[lane] = c.bodyB;
-    k.count[lane] = c.count;
     k.contact[lane] = index;
     k.againstFixed[lane] = c.againstFixed;
     for (int j = 0; j < c.count; ++j) {
@@ -73,13 +72,11 @@ void packLane(RigidBlock& k, int lane, const RigidContact& c, int index, std::sp
     }
 }
 
-/// A lane filled with a stand-in: no points, no friction, both sides the block's first body (read,
-/// never written).
+/// A lane filled with a stand-in: both sides the block's first body (read, never written); its
+/// masks, lane bits and masses stay the zeros the block was reset to (no points, no friction).
 void standIn(RigidBlock& k, int lane) {
     k.bodyA[lane] = k.bodyB[lane] = k.bodyA[0];
-    k.count[lane] = 0;
     k.contact[lane] = -1;
-    for (int j = 0; j < 2; ++j) k.pointMask[j][lane] = k.rubbingMask[j][lane] = maskLane(false);
 }
 
 } // namespace

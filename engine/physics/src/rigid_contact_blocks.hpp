@@ -51,7 +51,7 @@ struct RigidBlock {
     /// sweeps' masks, made once a step instead of lane by lane in every sweep.
     Lanes pointMask[2]{}, rubbingMask[2]{};
     RigidBlockPoint points[2];
-    int bodyA[kBlockLanes] = {}, bodyB[kBlockLanes] = {}, count[kBlockLanes] = {};
+    int bodyA[kBlockLanes] = {}, bodyB[kBlockLanes] = {};
     int contact[kBlockLanes] = {}; ///< the lane's place in the contact list; -1: a stand-in that writes nothing
     bool againstFixed[kBlockLanes] = {};
     /// The masks above as bits (lane i: bit i), and which lanes may write their body A or B: a real

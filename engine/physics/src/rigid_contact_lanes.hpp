@@ -130,19 +130,15 @@ struct LaneBody {
         : vx(gather<V>(s, &RigidState::velocity, &Vec2::x)), vy(gather<V>(s, &RigidState::velocity, &Vec2::y)),
           omega(gather<V>(s, &RigidState::omega)), inverseMass(inverseMass_), inverseInertia(inverseInertia_) {}
     /// v += p / m, omega += (r x p) / I, in the lanes of `apply` only (applyImpulse, lane-wise);
-    /// `all` says every lane applies, and the selects are skipped (the same bits).
+    /// `all` says every lane applies, and the selects are skipped (the same bits). With Opposite, the
+    /// impulse is -p, applied without negating it: v + (-p) / m is v - p / m, and r x (-p) = -(r x p),
+    /// since rounding is symmetric in sign (the same bits; a NaN's sign aside).
+    template <bool Opposite = false>
     [[gnu::always_inline]] void apply(bool all, MaskOf<V> apply, V rx, V ry, V px, V py) {
-        const V x = vx + px * inverseMass, y = vy + py * inverseMass;
-        const V w = omega + inverseInertia * (rx * py - ry * px);
-        vx = all ? x : (apply ? x : vx);
-        vy = all ? y : (apply ? y : vy);
-        omega = all ? w : (apply ? w : omega);
-    }
-    /// apply(all, apply, rx, ry, -px, -py) without the negations: v + (-p) / m is v - p / m, and
-    /// r x (-p) = -(r x p), since rounding is symmetric in sign (the same bits; a NaN's sign aside).
-    [[gnu::always_inline]] void applyOpposite(bool all, MaskOf<V> apply, V rx, V ry, V px, V py) {
-        const V x = vx - px * inverseMass, y = vy - py * inverseMass;
-        const V w = omega - inverseInertia * (rx * py - ry * px);
+        const V turn = inverseInertia * (rx * py - ry * px);
+        const V x = Opposite ? vx - px * inverseMass : vx + px * inverseMass;
+        const V y = Opposite ? vy - py * inverseMass : vy + py * inverseMass;
+        const V w = Opposite ? omega - turn : omega + turn;
         vx = all ? x : (apply ? x : vx);
         vy = all ? y : (apply ? y : vy);
         omega = all ? w : (apply ? w : omega);
@@ -263,7 +259,7 @@ template <class V>
         const V deliveredNormal = at(p.deliveredNormal), deliveredTangent = at(p.deliveredTangent);
         at.set(p.deliveredNormal, has ? deliveredNormal + normalImpulse : deliveredNormal);
         at.set(p.deliveredTangent, has ? deliveredTangent + tangentImpulse : deliveredTangent);
-        a.applyOpposite(all, has, at(p.armAx), at(p.armAy), ix, iy);
+        a.template apply<true>(all, has, at(p.armAx), at(p.armAy), ix, iy);
         b.apply(all, has, at(p.armBx), at(p.armBy), ix, iy);
         at.set(p.normalImpulse, zeroed ? zero : normalImpulse);
         at.set(p.tangentImpulse, zeroed ? zero : tangentImpulse);
@@ -320,7 +316,7 @@ template <class V>
         const V total = maxOf(old + lambda, zero);
         const V delta = total - old;
         const V px = nx * delta, py = ny * delta;
-        a.applyOpposite(all, has, rAx, rAy, px, py);
+        a.template apply<true>(all, has, rAx, rAy, px, py);
         b.apply(all, has, rBx, rBy, px, py);
         at.set(p.normalImpulse, total);
         at.set(p.deliveredNormal, at(p.deliveredNormal) + delta);
@@ -339,7 +335,7 @@ template <class V>
             const V total = minOf(maxOf(old - at(p.tangentMass) * vt, -limit), limit);
             const V delta = total - old;
             const V px = tx * delta, py = ty * delta;
-            a.applyOpposite(all, has, rAx, rAy, px, py);
+            a.template apply<true>(all, has, rAx, rAy, px, py);
             b.apply(all, has, rBx, rBy, px, py);
             // A lane without friction keeps its impulses as the scalar sweep leaves them.
             const V delivered = at(p.deliveredTangent);

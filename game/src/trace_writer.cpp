@@ -87,21 +87,30 @@ void TraceWriter::writeCircles(const World& world, const std::function<std::stri
 }
 
 void TraceWriter::writeState(const World& world) {
-    if (file_) writeCircles(world, nullptr);
+    if (!file_) return;
+    writeCircles(world, nullptr);
+    // Then the boxes and capsules, b<slot> in the scene's numbering (every [[box]], then every
+    // [[capsule]]), radius empty: a scene without them writes the same bytes as before they had rows.
+    writeBodies(world, nullptr);
 }
 
 void TraceWriter::writeLevelState(const World& world, const std::function<std::string(CircleId)>& circleName,
                                   const std::function<std::string(int)>& bodyName) {
     if (!file_) return;
     writeCircles(world, &circleName);
+    writeBodies(world, &bodyName);
+}
+
+void TraceWriter::writeBodies(const World& world, const std::function<std::string(int)>* bodyName) {
     const long long step = static_cast<long long>(world.stats().steps);
     const auto bodies = world.bodies();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& b = bodies[i];
         if (b.motion != Motion::dynamic) continue;
-        const std::string name = csvField(bodyName(static_cast<int>(i)));
-        std::fprintf(file_, "%lld,%.17g,b%zu,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,\n", step, world.time(), i,
-                     name.c_str(), b.position.x, b.position.y, b.velocity.x, b.velocity.y, b.angle, b.angularVelocity);
+        std::fprintf(file_, "%lld,%.17g,b%zu,", step, world.time(), i);
+        if (bodyName) std::fprintf(file_, "%s,", csvField((*bodyName)(static_cast<int>(i))).c_str());
+        std::fprintf(file_, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,\n", b.position.x, b.position.y, b.velocity.x,
+                     b.velocity.y, b.angle, b.angularVelocity);
         ++rows_;
     }
 }

@@ -2,7 +2,8 @@
 /// The trace: a CSV of every dynamic body's state at every step, for plots and exact comparisons.
 ///
 /// Header `step,time,body,x,y,vx,vy,angle,omega,radius`; step 0 is the initial state, then one
-/// block of rows per step. `body` is the circle's index in the World. Doubles are printed with
+/// block of rows per step. `body` is the circle's index in the World, or `b<slot>` for a box or capsule
+/// (radius empty), after the circles. Doubles are printed with
 /// %.17g, so a trace reads back bit-exact and two runs can be compared byte for byte.
 
 #include "rube/physics/world.hpp"
@@ -35,7 +36,8 @@ public:
     /// Creates the temporary file and writes `header`; false, with `error` set, when it cannot.
     /// First removes the temporaries of this target left by runs whose process is gone (SIGKILL).
     bool open(const std::filesystem::path& target, std::string& error, const char* header = kTraceHeader);
-    /// Appends one row per dynamic circle in the world's current state.
+    /// Appends one row per dynamic circle in the world's current state, then one per dynamic box or
+    /// capsule (`b<slot>`, radius empty).
     void writeState(const World& world);
     /// Appends a level trace's rows (kLevelTraceHeader): every dynamic circle, then every dynamic
     /// rigid body, with `circleName(id)` and `bodyName(slot)` in the item column.
@@ -50,6 +52,8 @@ public:
 
 private:
     void writeCircles(const World& world, const std::function<std::string(CircleId)>* circleName);
+    /// The dynamic rigid bodies' rows; with `bodyName`, a level's item column after `b<slot>`.
+    void writeBodies(const World& world, const std::function<std::string(int)>* bodyName);
 
     std::FILE* file_ = nullptr;
     std::filesystem::path target_;

@@ -42,6 +42,11 @@ rube_cli_test("run pool-break trace" "run|${RUBE_LEVELS}/pool-break.toml|--no-re
               -DTRACE=${RUBE_CLI_OUT}/pool.csv -DROWS=96)
 rube_cli_test("run pile trace" "run|${RUBE_LEVELS}/pile.toml|--no-render|--steps|2|--trace|${RUBE_CLI_OUT}/pile.csv" 0
               -DTRACE=${RUBE_CLI_OUT}/pile.csv -DROWS=3000)
+# A scene's boxes are rows too, after its circles: blocks' ball (0) and its six blocks (b0 to b5), so
+# 7 rows a step, each block's row its slot, six numbers and an empty radius.
+rube_cli_test("run blocks trace has the boxes" "run|${RUBE_LEVELS}/blocks.toml|--no-render|--steps|10|--trace|${RUBE_CLI_OUT}/blocks.csv" 0
+              -DTRACE=${RUBE_CLI_OUT}/blocks.csv -DROWS=77
+              "-DTRACE_MATCH=\n10,[^,\n]*,0,[^\n]*\n10,[^,\n]*,b0,-?[0-9][^\n]*,\n10,[^\n]*,b1,[^\n]*,\n10,[^\n]*,b2,[^\n]*,\n10,[^\n]*,b3,[^\n]*,\n10,[^\n]*,b4,[^\n]*,\n10,[^,\n]*,b5,[^\n]*,\n$")
 # No --steps: the scene's duration, 1.8 s at 1/60 s, is 108 steps.
 rube_cli_test("run steps from duration" "run|${RUBE_LEVELS}/projectile.toml|--no-render|--trace|${RUBE_CLI_OUT}/projectile.csv" 0
               -DTRACE=${RUBE_CLI_OUT}/projectile.csv -DROWS=109 "-DSTDOUT_MATCH=steps: +108\n")

@@ -50,9 +50,9 @@ constexpr Expected kExpected[] = {
     {"gears", "", 240, 0xe7608e207136eb71ull},
     {"gears", "auto", 240, 0xe7608e207136eb71ull},
     {"belt", "", 240, 0xb0caca793f162d80ull},
-    {"pulley", "", 240, 0x3140591403e6c9b8ull},
-    {"springs", "", 240, 0x5ee75383a323dec0ull},
-    {"piston", "", 240, 0xf63f13cb912ccb1dull},
+    {"pulley", "", 240, 0x275d0fbf35d4cc51ull},  // these three rest boxes on two points: solved together since
+    {"springs", "", 240, 0x188258e361dbea8full}, // 2026-11-28 (rigid_normal_pair.hpp)
+    {"piston", "", 240, 0xbba013fd801a45f2ull},
     {"weld", "", 240, 0x73b6fcd86315164bull},
     {"chain", "", 240, 0x303997cb4a75b424ull},
 };

@@ -15,6 +15,7 @@
 // of the public API.
 
 #include "rigid_contact_blocks.hpp"
+#include "rigid_normal_pair.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -298,30 +299,81 @@ template <class V>
             softImpulse[i] = soft.impulseScale;
         }
     const V invHw = splat<V>(invH), pushLimit = splat<V>(-softness.maxPushSpeed);
+    V bias[2], massScale[2], impulseScale[2];
     for (int j = 0; j < s.count; ++j) {
-        RigidBlockPoint& p = k.points[j];
-        const bool all = at.all(k.pointLanes[j]);
-        const MaskOf<V> has = at.mask(k.pointMask[j]);
-        const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
-        const V gap = nx * ((dpx + rBx) - rAx) + ny * ((dpy + rBy) - rAy) + at(p.baseSeparation);
+        const RigidBlockPoint& p = k.points[j];
+        const V gap = nx * ((dpx + at(p.armBx)) - at(p.armAx)) + ny * ((dpy + at(p.armBy)) - at(p.armAy)) +
+                      at(p.baseSeparation);
         const MaskOf<V> speculative = gap > zero;
         // Penetrating: the soft push-out when biased (bias 0, mass scale 1, impulse scale 0 when relaxing).
-        V bias = useBias ? maxOf(softBias * gap, pushLimit) : zero;
-        bias = speculative ? gap * invHw : bias;
-        const V massScale = speculative ? one : softMass;
-        const V impulseScale = speculative ? zero : softImpulse;
+        const V push = useBias ? maxOf(softBias * gap, pushLimit) : zero;
+        bias[j] = speculative ? gap * invHw : push;
+        massScale[j] = speculative ? one : softMass;
+        impulseScale[j] = speculative ? zero : softImpulse;
+    }
+    // Lanes whose two points are solved together (rigid_normal_pair.hpp), from the velocities before
+    // either pushes; the others point after point below, and these lanes keep theirs through it.
+    MaskOf<V> together = zero < zero;
+    bool anyTogether = false, allTogether = false;
+    V pairTotal[2] = {zero, zero};
+    if (s.count == 2) {
+        const RigidBlockPoint &p1 = k.points[0], &p2 = k.points[1];
+        const V rA1x = at(p1.armAx), rA1y = at(p1.armAy), rB1x = at(p1.armBx), rB1y = at(p1.armBy);
+        const V rA2x = at(p2.armAx), rA2y = at(p2.armAy), rB2x = at(p2.armBx), rB2y = at(p2.armBy);
+        const V vn1 = alongPoint(a, b, rA1x, rA1y, rB1x, rB1y, nx, ny);
+        const V vn2 = alongPoint(a, b, rA2x, rA2y, rB2x, rB2y, nx, ny);
+        const PairMass<V> mass(a.inverseMass + b.inverseMass, a.inverseInertia, b.inverseInertia, rA1x * ny - rA1y * nx,
+                               rB1x * ny - rB1y * nx, rA2x * ny - rA2y * nx, rB2x * ny - rB2y * nx);
+        const NormalPair<V, MaskOf<V>> pair = solveNormalPair<V, MaskOf<V>>(
+            mass.k11, mass.k22, mass.k12, massScale[0], massScale[1], vn1, vn2, bias[0], bias[1], at(p1.normalImpulse),
+            at(p2.normalImpulse), zero, one);
+        together = pair.solved & at.mask(k.pointMask[1]);
+        unsigned togetherLanes = 0;
+        for (int i = 0; i < W; ++i) togetherLanes |= together[i] != 0 ? 1u << i : 0u;
+        anyTogether = togetherLanes != 0;
+        // Every real lane together (a pyramid's blocks, mostly): nothing is left to go point by point.
+        allTogether = togetherLanes == at.bits(k.pointLanes[0]);
+        pairTotal[0] = pair.x1;
+        pairTotal[1] = pair.x2;
+    }
+    for (int j = 0; j < (allTogether ? 0 : s.count); ++j) {
+        RigidBlockPoint& p = k.points[j];
+        const bool all = !anyTogether && at.all(k.pointLanes[j]);
+        const MaskOf<V> has = anyTogether ? at.mask(k.pointMask[j]) & ~together : at.mask(k.pointMask[j]);
+        const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
         const V vn = alongPoint(a, b, rAx, rAy, rBx, rBy, nx, ny);
         const V old = at(p.normalImpulse);
-        const V lambda = -at(p.normalMass) * massScale * (vn + bias) - impulseScale * old;
+        const V lambda = -at(p.normalMass) * massScale[j] * (vn + bias[j]) - impulseScale[j] * old;
         const V total = maxOf(old + lambda, zero);
         const V delta = total - old;
         const V px = nx * delta, py = ny * delta;
         a.template apply<true>(all, has, rAx, rAy, px, py);
         b.apply(all, has, rBx, rBy, px, py);
-        at.set(p.normalImpulse, total);
-        at.set(p.deliveredNormal, at(p.deliveredNormal) + delta);
-        at.set(p.maxNormalImpulse, maxOf(at(p.maxNormalImpulse), total));
+        const V delivered = at(p.deliveredNormal), most = at(p.maxNormalImpulse);
+        if (anyTogether) {
+            at.set(p.normalImpulse, together ? old : total);
+            at.set(p.deliveredNormal, together ? delivered : delivered + delta);
+            at.set(p.maxNormalImpulse, together ? most : maxOf(most, total));
+        } else {
+            at.set(p.normalImpulse, total);
+            at.set(p.deliveredNormal, delivered + delta);
+            at.set(p.maxNormalImpulse, maxOf(most, total));
+        }
     }
+    // The pairs' impulses, point 1 then point 2, on the velocities the loop above left untouched.
+    if (anyTogether)
+        for (int j = 0; j < 2; ++j) {
+            RigidBlockPoint& p = k.points[j];
+            const V old = at(p.normalImpulse), total = pairTotal[j];
+            const V delta = total - old;
+            const V px = nx * delta, py = ny * delta;
+            a.template apply<true>(allTogether && at.all(k.pointLanes[0]), together, at(p.armAx), at(p.armAy), px, py);
+            b.apply(allTogether && at.all(k.pointLanes[0]), together, at(p.armBx), at(p.armBy), px, py);
+            const V delivered = at(p.deliveredNormal), most = at(p.maxNormalImpulse);
+            at.set(p.normalImpulse, together ? total : old);
+            at.set(p.deliveredNormal, together ? delivered + delta : delivered);
+            at.set(p.maxNormalImpulse, together ? maxOf(most, total) : most);
+        }
     if (anyRubs) {
         const V tx = at(k.tangentX), ty = at(k.tangentY), friction = at(k.friction);
         for (int j = 0; j < s.count; ++j) {

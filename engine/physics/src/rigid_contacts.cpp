@@ -1,6 +1,8 @@
 // Rigid contact constraints: build, warm start, soft solve with friction, restitution.
 #include "rigid_contacts.hpp"
 
+#include "rigid_normal_pair.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -120,6 +122,47 @@ void measureApproach(std::span<RigidContact> contacts, std::span<const RigidStat
     }
 }
 
+namespace {
+
+/// K's entries for a two-point contact's points from their current arms.
+PairMass<double> pairMass(const RigidContact& c, const LoadedBody& a, const LoadedBody& b) {
+    const Vec2 n = c.normal;
+    return PairMass<double>(a.inverseMass + b.inverseMass, a.inverseInertia, b.inverseInertia,
+                            c.points[0].armA.cross(n), c.points[0].armB.cross(n), c.points[1].armA.cross(n),
+                            c.points[1].armB.cross(n));
+}
+
+/// Both normal impulses of a two-point contact at once (solveNormalPair); false, changing nothing,
+/// when no case of the problem holds.
+/// `sweep`: a pass of the substeps, which also counts what each point delivered and its largest impulse.
+bool solvePointsTogether(RigidContact& c, LoadedBody& a, LoadedBody& b, const double (&bias)[2],
+                         const double (&massScale)[2], bool sweep) {
+    RigidContactPoint& p1 = c.points[0];
+    RigidContactPoint& p2 = c.points[1];
+    const double vn1 = c.normal.dot(pointVelocity(b, p1.armB) - pointVelocity(a, p1.armA));
+    const double vn2 = c.normal.dot(pointVelocity(b, p2.armB) - pointVelocity(a, p2.armA));
+    const PairMass<double> k = pairMass(c, a, b);
+    const NormalPair<double, bool> x = solveNormalPair<double, bool>(k.k11, k.k22, k.k12, massScale[0], massScale[1],
+                                                                     vn1, vn2, bias[0], bias[1], p1.normalImpulse,
+                                                                     p2.normalImpulse, 0.0, 1.0);
+    if (!x.solved) return false;
+    const double totals[2] = {x.x1, x.x2};
+    for (int j = 0; j < 2; ++j) {
+        RigidContactPoint& p = c.points[j];
+        const double delta = totals[j] - p.normalImpulse;
+        p.normalImpulse = totals[j];
+        if (sweep) {
+            p.deliveredNormal += delta;
+            p.maxNormalImpulse = std::max(p.maxNormalImpulse, totals[j]);
+        }
+        applyImpulse(a, p.armA, c.normal * -delta);
+        applyImpulse(b, p.armB, c.normal * delta);
+    }
+    return true;
+}
+
+} // namespace
+
 void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> bodies,
                         const RigidContactSoftness& softness, double h, bool useBias) {
     const double invH = 1.0 / h;
@@ -129,29 +172,34 @@ void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> 
         LoadedBody a = loadBody(sa), b = loadBody(sb);
         const Softness& soft = c.againstFixed ? softness.fixed : softness.movable;
         const Vec2 dp = b.displacement - a.displacement;
+        double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0};
         for (int k = 0; k < c.count; ++k) {
-            RigidContactPoint& p = c.points[k];
-            const Vec2 rA = p.armA, rB = p.armB;
+            const RigidContactPoint& p = c.points[k];
             // The current gap from the fixed anchors and how far each body moved and turned.
-            const double s = c.normal.dot(dp + rB - rA) + p.baseSeparation;
-            double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+            const double s = c.normal.dot(dp + p.armB - p.armA) + p.baseSeparation;
             if (s > 0.0) {
-                bias = s * invH; // speculative: close at most the gap within this substep
+                bias[k] = s * invH; // speculative: close at most the gap within this substep
             } else if (useBias) {
-                bias = std::max(soft.biasRate * s, -softness.maxPushSpeed);
-                massScale = soft.massScale;
-                impulseScale = soft.impulseScale;
+                bias[k] = std::max(soft.biasRate * s, -softness.maxPushSpeed);
+                massScale[k] = soft.massScale;
+                impulseScale[k] = soft.impulseScale;
             }
-            const double vn = c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
-            const double lambda = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
-            const double total = std::max(p.normalImpulse + lambda, 0.0);
-            const double delta = total - p.normalImpulse;
-            p.normalImpulse = total;
-            p.deliveredNormal += delta;
-            p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
-            applyImpulse(a, rA, c.normal * -delta);
-            applyImpulse(b, rB, c.normal * delta);
         }
+        // Two points together (rigid_normal_pair.hpp), unless K is singular; else one after the other.
+        if (!(c.count == 2 && solvePointsTogether(c, a, b, bias, massScale, true)))
+            for (int k = 0; k < c.count; ++k) {
+                RigidContactPoint& p = c.points[k];
+                const Vec2 rA = p.armA, rB = p.armB;
+                const double vn = c.normal.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+                const double lambda = -p.normalMass * massScale[k] * (vn + bias[k]) - impulseScale[k] * p.normalImpulse;
+                const double total = std::max(p.normalImpulse + lambda, 0.0);
+                const double delta = total - p.normalImpulse;
+                p.normalImpulse = total;
+                p.deliveredNormal += delta;
+                p.maxNormalImpulse = std::max(p.maxNormalImpulse, total);
+                applyImpulse(a, rA, c.normal * -delta);
+                applyImpulse(b, rB, c.normal * delta);
+            }
         if (c.friction > 0.0) {
             const Vec2 t = c.tangent;
             for (int k = 0; k < c.count; ++k) {
@@ -181,50 +229,15 @@ bool bounces(const RigidContactPoint& p, double threshold) {
     return p.maxNormalImpulse > 0.0 && p.approachSpeed >= threshold;
 }
 
-/// Both points of a two-point contact at once (the 2 x 2 linear complementarity problem solved by
-/// enumerating its four cases, as Box2D v2's block solver): with the points' normal speeds driven to
-/// C a_i together, the kinetic energy changes by (C^2 - 1) / 2 a^T K^-1 a <= 0 for C <= 1. One point
-/// after the other would let the second undo the first and, for a turning body, add energy.
+/// Both points of a two-point contact at once (solveNormalPair, rigid: mass scales 1): with the
+/// points' normal speeds driven to C a_i together, the kinetic energy changes by (C^2 - 1) / 2 a^T
+/// K^-1 a <= 0 for C <= 1. One point after the other would let the second undo the first and, for a
+/// turning body, add energy. False, changing nothing, when no case of the problem holds.
 bool blockRestitution(RigidContact& c, LoadedBody& a, LoadedBody& b) {
-    RigidContactPoint& p1 = c.points[0];
-    RigidContactPoint& p2 = c.points[1];
-    const Vec2 rA1 = p1.armA, rB1 = p1.armB;
-    const Vec2 rA2 = p2.armA, rB2 = p2.armB;
-    const double rn1A = rA1.cross(c.normal), rn1B = rB1.cross(c.normal);
-    const double rn2A = rA2.cross(c.normal), rn2B = rB2.cross(c.normal);
-    const double m = a.inverseMass + b.inverseMass;
-    const double k11 = m + a.inverseInertia * rn1A * rn1A + b.inverseInertia * rn1B * rn1B;
-    const double k22 = m + a.inverseInertia * rn2A * rn2A + b.inverseInertia * rn2B * rn2B;
-    const double k12 = m + a.inverseInertia * rn1A * rn2A + b.inverseInertia * rn1B * rn2B;
-    const double det = k11 * k22 - k12 * k12;
-    if (!(det > 1e-9 * k11 * k22)) return false; // points too close together: K is singular
-    const double vn1 = c.normal.dot(pointVelocity(b, rB1) - pointVelocity(a, rA1));
-    const double vn2 = c.normal.dot(pointVelocity(b, rB2) - pointVelocity(a, rA2));
-    // With x the new total impulses: vn'_i - target_i = (K x)_i + q_i.
-    const double x1old = p1.normalImpulse, x2old = p2.normalImpulse;
-    const double q1 = vn1 - (k11 * x1old + k12 * x2old) - c.bounciness * p1.approachSpeed;
-    const double q2 = vn2 - (k12 * x1old + k22 * x2old) - c.bounciness * p2.approachSpeed;
-    double x1 = (-k22 * q1 + k12 * q2) / det, x2 = (k12 * q1 - k11 * q2) / det;
-    if (x1 < 0.0 || x2 < 0.0) {
-        x1 = -q1 / k11;
-        x2 = 0.0;
-        if (x1 < 0.0 || k12 * x1 + q2 < 0.0) {
-            x1 = 0.0;
-            x2 = -q2 / k22;
-            if (x2 < 0.0 || k12 * x2 + q1 < 0.0) {
-                x2 = 0.0;
-                if (q1 < 0.0 || q2 < 0.0) return false;
-            }
-        }
-    }
-    const double d1 = x1 - x1old, d2 = x2 - x2old;
-    p1.normalImpulse = x1;
-    p2.normalImpulse = x2;
-    applyImpulse(a, rA1, c.normal * -d1);
-    applyImpulse(b, rB1, c.normal * d1);
-    applyImpulse(a, rA2, c.normal * -d2);
-    applyImpulse(b, rB2, c.normal * d2);
-    return true;
+    // vn'_i - target_i = (K x)_i + c_i: restitution's bias is minus its target speed.
+    const double bias[2] = {-(c.bounciness * c.points[0].approachSpeed), -(c.bounciness * c.points[1].approachSpeed)};
+    const double rigid[2] = {1.0, 1.0};
+    return solvePointsTogether(c, a, b, bias, rigid, false);
 }
 
 } // namespace

@@ -368,6 +368,45 @@ TEST_CASE("two boxes meeting face on part as two blocks would: momentum kept, C 
     }
 }
 
+TEST_CASE("a box on a conveyor slides at mu g until it runs at the belt's speed, either way", "[rigid]") {
+    // A conveyor is a segment whose surface runs at surface_speed along a -> b (felt through friction).
+    // Boxes once ignored it: friction saw the segment standing still, so a crate on a belt never moved.
+    for (const double mu : {0.2, 0.5, 1.0}) {
+        for (const double speed : {-3.0, 1.0, 4.0}) {
+            for (const double mass : {0.5, 3.0}) {
+                WorldDef def;
+                def.method = Method::solver;
+                def.gravity = {0.0, -kG};
+                def.sleepSpeed = 0.0;
+                World world(def);
+                SegmentDef belt;
+                belt.a = {-40.0, 0.0};
+                belt.b = {40.0, 0.0};
+                belt.material = {0.0, 1.0};
+                belt.surfaceSpeed = speed;
+                world.addSegment(belt);
+                world.addBody(box({0.0, 0.15}, 0.8, 0.3, mass, 0.0, mu));
+                // Sliding lasts |u| / (mu g): measure the acceleration over its first half, then the speed
+                // a second after it ends.
+                const double slide = std::abs(speed) / (mu * kG);
+                const int half = static_cast<int>(0.5 * slide / def.timeStep);
+                run(world, 0.05); // landed: it starts 0 m above the belt
+                const double v0 = world.bodies()[0].velocity.x;
+                for (int i = 0; i < half; ++i) world.step();
+                const double a = (world.bodies()[0].velocity.x - v0) / (half * def.timeStep);
+                run(world, slide + 1.0);
+                const RigidBody& b = world.bodies()[0];
+                INFO("mu " << mu << ", belt " << speed << " m/s, mass " << mass << ": a " << a << " (mu g "
+                           << std::copysign(mu * kG, speed) << "), final " << b.velocity.x << " m/s, angle "
+                           << b.angle);
+                CHECK(a == Approx(std::copysign(mu * kG, speed)).epsilon(0.01));
+                CHECK(b.velocity.x == Approx(speed).margin(1e-6));
+                CHECK(std::abs(b.angle) < 1e-3);
+            }
+        }
+    }
+}
+
 TEST_CASE("a ball rolls down a tilted fixed plank at (2/3) g sin theta", "[rigid]") {
     World world = solverWorld();
     const double theta = 20.0 * kDegree;

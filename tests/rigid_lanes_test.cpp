@@ -54,6 +54,7 @@ Scene randomScene(std::mt19937_64& rng, int n, int m) {
         c.normal = {std::cos(angle), std::sin(angle)};
         c.tangent = c.normal.perpendicular();
         c.friction = u(rng) > 0.0 ? 0.6 + 0.3 * u(rng) : 0.0;
+        c.tangentSpeed = u(rng) > 0.5 ? 2.0 * u(rng) : 0.0; // some run on a conveyor's belt
         c.againstFixed = s.bodies[static_cast<std::size_t>(c.bodyA)].inverseMass == 0.0 ||
                          s.bodies[static_cast<std::size_t>(c.bodyB)].inverseMass == 0.0;
         c.count = u(rng) > -0.3 ? 2 : 1;

@@ -50,6 +50,7 @@ void packLane(RigidBlock& k, int lane, const RigidContact& c, int index, std::sp
     k.tangentX[lane] = c.tangent.x;
     k.tangentY[lane] = c.tangent.y;
     k.friction[lane] = c.friction;
+    k.tangentSpeed[lane] = c.tangentSpeed;
     k.bodyA[lane] = c.bodyA;
     k.bodyB[lane] = c.bodyB;
     k.contact[lane] = index;

@@ -44,6 +44,7 @@ struct RigidBlockPoint {
 /// kBlockLanes contacts of one colour (or one contact of the overflow and stand-ins).
 struct RigidBlock {
     Lanes normalX{}, normalY{}, tangentX{}, tangentY{}, friction{};
+    Lanes tangentSpeed{}; ///< RigidContact::tangentSpeed: a conveyor's belt under the lane's body
     /// The bodies' inverse masses and inertias, which hold for the step: packed once, not gathered
     /// from four bodies each sweep (a stand-in's are 0).
     Lanes inverseMassA{}, inverseMassB{}, inverseInertiaA{}, inverseInertiaB{};

@@ -375,13 +375,13 @@ template <class V>
             at.set(p.maxNormalImpulse, together ? maxOf(most, total) : most);
         }
     if (anyRubs) {
-        const V tx = at(k.tangentX), ty = at(k.tangentY), friction = at(k.friction);
+        const V tx = at(k.tangentX), ty = at(k.tangentY), friction = at(k.friction), belt = at(k.tangentSpeed);
         for (int j = 0; j < s.count; ++j) {
             RigidBlockPoint& p = k.points[j];
             const bool all = at.all(k.rubbingLanes[j]);
             const MaskOf<V> has = at.mask(k.rubbingMask[j]);
             const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
-            const V vt = alongPoint(a, b, rAx, rAy, rBx, rBy, tx, ty);
+            const V vt = alongPoint(a, b, rAx, rAy, rBx, rBy, tx, ty) + belt;
             const V limit = friction * at(p.normalImpulse);
             const V old = at(p.tangentImpulse);
             const V total = minOf(maxOf(old - at(p.tangentMass) * vt, -limit), limit);

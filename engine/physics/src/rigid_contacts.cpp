@@ -205,7 +205,7 @@ void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> 
             for (int k = 0; k < c.count; ++k) {
                 RigidContactPoint& p = c.points[k];
                 const Vec2 rA = p.armA, rB = p.armB;
-                const double vt = t.dot(pointVelocity(b, rB) - pointVelocity(a, rA));
+                const double vt = t.dot(pointVelocity(b, rB) - pointVelocity(a, rA)) + c.tangentSpeed;
                 const double limit = c.friction * p.normalImpulse;
                 // Spelled out as libstdc++'s std::clamp, so the lanes (rigid_contact_lanes.hpp) can match it.
                 const double total = std::min(std::max(p.tangentImpulse - p.tangentMass * vt, -limit), limit);

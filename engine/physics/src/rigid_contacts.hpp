@@ -47,6 +47,9 @@ struct RigidContact {
     bool againstFixed = false; ///< a side cannot be moved: the contact takes the stiffer softness
     double friction = 0.0;   ///< mu of the pair: the product of both materials' (as circle pairs)
     double bounciness = 0.0; ///< C of the pair: the product of both materials'
+    /// How fast B's surface runs along the tangent on its own (a conveyor's belt: t . its surface
+    /// velocity): friction drives the points' slip vt + tangentSpeed to zero. 0 for anything else.
+    double tangentSpeed = 0.0;
     int count = 0;
     RigidContactPoint points[2];
 };

@@ -63,7 +63,8 @@ void RigidStage::capBounceEnergy() {
         for (std::size_t k = first; k < last; ++k) {
             const RigidContact& c = contacts_[k];
             Vec2 u;
-            const bool unmovable = unmovableVelocity(view_, c.b, u);
+            // A conveyor's belt does work on what it carries: not a fixed partner.
+            const bool unmovable = unmovableVelocity(view_, c.b, u) && c.tangentSpeed == 0.0;
             const auto a = static_cast<std::size_t>(c.a.index);
             if (states_[a].inverseMass != 0.0) meet(a, unmovable, u);
             if (c.b.rigid && states_[static_cast<std::size_t>(c.b.index)].inverseMass != 0.0)

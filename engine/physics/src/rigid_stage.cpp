@@ -280,9 +280,15 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             const Segment& seg = ctx.segments[s];
             const BodySide segmentSide{circleCount_ + static_cast<int>(s), false};
             if (!boxes[i].overlaps(segmentBoxes_[s]) || tied(side, segmentSide)) continue;
+            const std::size_t before = madeBySegment_.size();
             add(side, segmentSide, bi.position, seg.a,
                 collideRoundedPolygons(shapes_[i], segmentShapes_[s], reach_[i] + segmentReach_[s]), bi.material,
                 seg.material);
+            // A conveyor carries what rubs on it: its belt runs along a -> b (as the circles' FrictionBody).
+            if (seg.surfaceSpeed != 0.0 && madeBySegment_.size() > before) {
+                RigidContact& c = madeBySegment_.back();
+                c.tangentSpeed = c.tangent.dot((seg.b - seg.a).normalized() * seg.surfaceSpeed);
+            }
         }
     }
     if (anyAsleep) reachBySegments(ctx, dt);

@@ -51,11 +51,35 @@ Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
     const double area = submergedArea(c.radius, c.position.y - water.max.y);
     if (area <= 0.0) return {};
     const double fullArea = std::numbers::pi * c.radius * c.radius;
+    // Drag, exact as for the wind: dv/dt = -k v with k = 2r drag (A / pi r^2) / m.
+    const double k = 2.0 * c.radius * water.drag * (area / fullArea) * c.inverseMass;
+    // Buoyancy is a spring along the vertical: rising by dy uncovers a chord of width w at the surface,
+    // dA = -w dy, so its stiffness per unit mass is kappa = |g| rho w / m and its period 2 pi / sqrt(kappa).
+    // Kicked at the step's start and then moved (semi-implicit Euler), a spring stiffer than the step
+    // can follow, dt^2 kappa > 4, gains energy every step: a 10 g ball of radius 0.1 m set on water of
+    // 1000 kg/m^2 rose 6.7 km in 20 s. Past dt^2 kappa = 1 the spring is taken implicitly instead, the
+    // upward speed after the step being v1 = (v0 + (b - |g|) dt) / (1 + dt^2 kappa) with b the buoyant
+    // acceleration now (implicit Euler on the linearised spring: stable at any stiffness), and the drag
+    // then slows that velocity, not the one the step began with (summed, the two would both undo v0).
+    // Below it, as in every shipped scene and level, the kicks are as before.
+    const double height = c.position.y - water.max.y;
+    const double g = gravity.length();
+    if (g > 0.0 && std::abs(height) < c.radius) {
+        // Along up = -g / |g|, the surface (y = const) is crossed at up.y of the speed.
+        const Vec2 up = gravity * (-1.0 / g);
+        const double chord = 2.0 * std::sqrt(c.radius * c.radius - height * height);
+        const double stiffness = dt * dt * g * water.density * chord * std::abs(up.y) * c.inverseMass;
+        if (stiffness > 1.0) {
+            const double rise = c.velocity.dot(up);
+            const double lift = g * water.density * area * c.inverseMass;
+            const double after = (rise + (lift - g) * dt) / (1.0 + stiffness);
+            const Vec2 end = (c.velocity + up * (after - rise)) * std::exp(-k * dt);
+            return end - c.velocity + up * (g * dt); // the method adds gravity's g dt itself
+        }
+    }
     // Archimedes: the displaced water's weight, rho A g, pushes against gravity; its line of action
     // passes through the centre of a circle, so it turns nothing.
     const Vec2 buoyancy = gravity * (-water.density * area * c.inverseMass * dt);
-    // Drag, exact as for the wind: dv/dt = -k v with k = 2r drag (A / pi r^2) / m.
-    const double k = 2.0 * c.radius * water.drag * (area / fullArea) * c.inverseMass;
     return buoyancy + c.velocity * std::expm1(-k * dt);
 }
 

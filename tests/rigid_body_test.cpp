@@ -379,12 +379,8 @@ TEST_CASE("a box on a conveyor slides at mu g until it runs at the belt's speed,
                 def.gravity = {0.0, -kG};
                 def.sleepSpeed = 0.0;
                 World world(def);
-                SegmentDef belt;
-                belt.a = {-40.0, 0.0};
-                belt.b = {40.0, 0.0};
-                belt.material = {0.0, 1.0};
-                belt.surfaceSpeed = speed;
-                world.addSegment(belt);
+                world.addSegment(
+                    SegmentDef{.a = {-40.0, 0.0}, .b = {40.0, 0.0}, .material = {0.0, 1.0}, .surfaceSpeed = speed});
                 world.addBody(box({0.0, 0.15}, 0.8, 0.3, mass, 0.0, mu));
                 // Sliding lasts |u| / (mu g): measure the acceleration over its first half, then the speed
                 // a second after it ends.

@@ -121,8 +121,47 @@ TEST_CASE("explosion: a body at the very centre is pushed up, and a world works 
     ball.position = e.centre + Vec2{0, 6};
     world.addCircle(ball);
     world.addSegment(SegmentDef{}); // segments never move
-    CHECK(applyExplosion(world, e) == std::vector<CircleId>{world.circleId(0)});
+    CHECK(applyExplosion(world, e).circles == std::vector<CircleId>{world.circleId(0)});
     CHECK(approxEqual(world.circles()[0].velocity, {-5.0, 0}, 1e-15));
     CHECK(world.circles()[1].velocity == Vec2{});
     CHECK(world.segments()[0].a == Vec2{});
+}
+
+TEST_CASE("explosion: boxes and capsules in the blast take the same impulse through their centre, no spin",
+          "[explosion]") {
+    // The bomb part says it pushes every body near it; crates, planks and dominoes were left standing.
+    for (const Falloff falloff : {Falloff::linear, Falloff::inverseSquareClamped, Falloff::constant}) {
+        const Explosion e{.centre = {1.0, 2.0}, .radius = 3.0, .strength = 4.0, .falloff = falloff};
+        World world;
+        const Vec2 offsets[] = {{1.0, 0.0}, {-0.5, 1.5}, {0.0, -2.9}, {2.5, 2.5}}; // the last is outside
+        const double masses[] = {0.5, 2.0, 8.0, 1.0};
+        std::vector<BodyId> ids;
+        for (int k = 0; k < 4; ++k) {
+            RigidBodyDef d;
+            d.shape = k % 2 == 0 ? BodyShape::box : BodyShape::capsule;
+            d.position = e.centre + offsets[k];
+            d.halfExtents = {0.4, 0.1};
+            d.mass = masses[k];
+            d.angle = 0.3 * k;
+            d.velocity = {0.25, -0.5};
+            ids.push_back(world.addBody(d));
+        }
+        RigidBodyDef fixed;
+        fixed.position = e.centre + Vec2{0.5, 0.0};
+        fixed.motion = Motion::fixed;
+        world.addBody(fixed);
+        const ExplosionPushed pushed = applyExplosion(world, e);
+        CHECK(pushed.circles.empty());
+        CHECK(pushed.bodies == std::vector<BodyId>{ids[0], ids[1], ids[2]});
+        for (int k = 0; k < 4; ++k) {
+            const RigidBody& b = world.bodies()[static_cast<std::size_t>(world.slot(ids[static_cast<std::size_t>(k)]))];
+            const double d = offsets[k].length();
+            // Delta p = J along the radius: m (v - v0) = strength falloff(d) (p - c) / d.
+            const Vec2 expected = offsets[k] / d * (explosionImpulse(e, d) / masses[k]);
+            INFO("body " << k << ", " << static_cast<int>(falloff) << ": v " << b.velocity.x << ", " << b.velocity.y);
+            CHECK(approxEqual(b.velocity - Vec2{0.25, -0.5}, expected, 1e-14));
+            CHECK(b.angularVelocity == 0.0);
+        }
+        CHECK(world.bodies()[4].velocity == Vec2{});
+    }
 }

@@ -1,5 +1,5 @@
-// Explosion force: one radial impulse per dynamic circle in the blast, J = strength * falloff(d / radius),
-// applied as Delta v = J * inverseMass (lecture 3: an impulse is a change of momentum).
+// Explosion force: one radial impulse per dynamic circle or rigid body in the blast, J = strength * falloff(d /
+// radius), applied as Delta v = J * inverseMass (lecture 3: an impulse is a change of momentum).
 #include "rube/physics/explosion.hpp"
 
 #include "rube/physics/world.hpp"
@@ -7,6 +7,17 @@
 #include <algorithm>
 
 namespace rube {
+
+namespace {
+
+/// The radial direction from the centre to `position` and its distance; +y at the very centre.
+Vec2 blastDirection(const Explosion& explosion, Vec2 position, double& distance) {
+    const Vec2 offset = position - explosion.centre;
+    distance = offset.length();
+    return distance > 0.0 ? offset / distance : Vec2{0.0, 1.0};
+}
+
+} // namespace
 
 double explosionFalloff(const Explosion& explosion, double distance) {
     // Strictly inside: a body exactly at the edge gets nothing, whatever the fall-off.
@@ -34,26 +45,42 @@ std::vector<int> applyExplosion(std::span<Circle> circles, const Explosion& expl
         Circle& c = circles[i];
         // Kinematic and fixed bodies have infinite mass (inverseMass 0): no impulse moves them.
         if (c.motion != Motion::dynamic) continue;
-        const Vec2 offset = c.position - explosion.centre;
-        const double distance = offset.length();
-        if (!(distance < explosion.radius)) continue;
         // At the very centre there is no radial direction: push straight up (+y), documented in the header.
-        const Vec2 direction = distance > 0.0 ? offset / distance : Vec2{0.0, 1.0};
+        double distance = 0.0;
+        const Vec2 direction = blastDirection(explosion, c.position, distance);
+        if (!(distance < explosion.radius)) continue;
         c.velocity += direction * (explosionImpulse(explosion, distance) * c.inverseMass); // Delta v = J / m
         affected.push_back(static_cast<int>(i));
     }
     return affected;
 }
 
-std::vector<CircleId> applyExplosion(World& world, const Explosion& explosion) {
-    // The same impulses, through the world's setter so that a sleeping island it reaches wakes.
+ExplosionPushed applyExplosion(World& world, const Explosion& explosion) {
+    // The same impulses, through the world's setters so that a sleeping island it reaches wakes.
+    ExplosionPushed pushed;
     std::vector<Circle> circles(world.circles().begin(), world.circles().end());
-    std::vector<CircleId> affected;
     for (const int slot : applyExplosion(circles, explosion)) {
-        affected.push_back(world.circleId(slot));
-        world.setVelocity(affected.back(), circles[static_cast<std::size_t>(slot)].velocity);
+        pushed.circles.push_back(world.circleId(slot));
+        world.setVelocity(pushed.circles.back(), circles[static_cast<std::size_t>(slot)].velocity);
     }
-    return affected;
+    // Boxes and capsules: the same impulse through the centre of mass. Their handles first: a setter
+    // may not move a slot, but the list is read before any is written all the same.
+    std::vector<std::pair<BodyId, Vec2>> kicks;
+    const auto bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& b = bodies[i];
+        if (b.motion != Motion::dynamic || b.inverseMass == 0.0) continue;
+        double distance = 0.0;
+        const Vec2 direction = blastDirection(explosion, b.position, distance);
+        if (!(distance < explosion.radius)) continue;
+        kicks.emplace_back(world.bodyId(static_cast<int>(i)),
+                           b.velocity + direction * (explosionImpulse(explosion, distance) * b.inverseMass));
+    }
+    for (const auto& [id, velocity] : kicks) {
+        world.setVelocity(id, velocity);
+        pushed.bodies.push_back(id);
+    }
+    return pushed;
 }
 
 } // namespace rube

@@ -96,7 +96,7 @@ public:
         explosion.centre = desc.position;
         explosion.radius = p.blastRadius;
         explosion.strength = p.strength;
-        const std::vector<CircleId> pushed = applyExplosion(world, explosion);
+        const ExplosionPushed pushed = applyExplosion(world, explosion);
         // The casing is gone with the blast.
         world.remove(state.circle);
         state.circle = {};

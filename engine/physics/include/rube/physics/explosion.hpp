@@ -1,6 +1,6 @@
 #pragma once
 /// Explosion force (the rubric's extra physics): a radial impulse, falling off with distance, given
-/// to every dynamic circle whose centre lies within the blast radius.
+/// to every dynamic circle, box and capsule whose centre lies within the blast radius.
 ///
 /// An impulse changes momentum at once: Delta v = J / m = J * inverseMass (lecture 3, Newton's second
 /// law over an instant), so heavier bodies get a smaller kick and every body the same momentum for the
@@ -46,8 +46,16 @@ double explosionImpulse(const Explosion& explosion, double distance);
 /// Returns the indices of the circles it pushed, in increasing order.
 std::vector<int> applyExplosion(std::span<Circle> circles, const Explosion& explosion);
 
-/// The same on a world's circles (their islands woken); segments are fixed or kinematic and never
-/// move. Returns the handles of the circles it pushed, in slot order.
-std::vector<CircleId> applyExplosion(World& world, const Explosion& explosion);
+/// What an explosion pushed in a world, each list in slot order.
+struct ExplosionPushed {
+    std::vector<CircleId> circles;
+    std::vector<BodyId> bodies; ///< dynamic boxes and capsules
+    std::size_t size() const { return circles.size() + bodies.size(); }
+};
+
+/// The same on a world's circles, and on its dynamic boxes and capsules, each pushed through its
+/// centre of mass (v += J inverseMass along the direction from the centre to it; a push through the
+/// centre turns nothing), their islands woken. Segments are fixed or kinematic and never move.
+ExplosionPushed applyExplosion(World& world, const Explosion& explosion);
 
 } // namespace rube

@@ -112,3 +112,86 @@ TEST_CASE("rayCast: the nearest of several shapes is reported, and a ray from in
     CHECK(wall->distance == Approx(1.9).margin(1e-12));
     CHECK_FALSE(rayCast(world, {6.0, 0.0}, {1.0, 0.0}, 1.8));
 }
+
+TEST_CASE("rayCast: a turned box is entered where the ray first lies inside all four of its faces, and a "
+          "capsule body as a capsule",
+          "[raycast]") {
+    // Against an independent form: in the box's own frame the box is axis-aligned, and the ray enters
+    // at the largest of the slab entries max(t_x, t_y) (the classic slab test), hitting the face of
+    // that slab. Random boxes, turns, origins and directions; a ray from inside a box does not meet it.
+    std::mt19937_64 rng(26);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int hits = 0, misses = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Vec2 centre{4.0 * unit(rng) - 2.0, 4.0 * unit(rng) - 2.0};
+        const Vec2 half{0.1 + unit(rng), 0.1 + unit(rng)};
+        const double angle = 2.0 * std::numbers::pi * unit(rng);
+        World world;
+        RigidBodyDef d;
+        d.shape = BodyShape::box;
+        d.position = centre;
+        d.halfExtents = half;
+        d.angle = angle;
+        d.motion = unit(rng) < 0.5 ? Motion::fixed : Motion::dynamic;
+        world.addBody(d);
+        const Vec2 origin{10.0 * unit(rng) - 5.0, 10.0 * unit(rng) - 5.0};
+        // Half the rays aim near the box, so that both hits and misses are many.
+        const Vec2 aim = centre + Vec2{2.0 * unit(rng) - 1.0, 2.0 * unit(rng) - 1.0} - origin;
+        const Vec2 direction = trial % 2 == 0 ? Vec2::fromAngle(2.0 * std::numbers::pi * unit(rng))
+                                              : aim / aim.length();
+        // The ray in the box's frame: rotate by -angle about the centre.
+        const double c = std::cos(angle), s = std::sin(angle);
+        const auto local = [&](Vec2 v) { return Vec2{c * v.x + s * v.y, -s * v.x + c * v.y}; };
+        const Vec2 o = local(origin - centre), dir = local(direction);
+        double enter = -1e300, leave = 1e300;
+        bool parallelMiss = false;
+        for (int axis = 0; axis < 2; ++axis) {
+            const double p = axis == 0 ? o.x : o.y, v = axis == 0 ? dir.x : dir.y, h = axis == 0 ? half.x : half.y;
+            if (std::abs(v) < 1e-12) {
+                parallelMiss = parallelMiss || std::abs(p) > h;
+                continue;
+            }
+            const double t0 = (-h - p) / v, t1 = (h - p) / v;
+            enter = std::max(enter, std::min(t0, t1));
+            leave = std::min(leave, std::max(t0, t1));
+        }
+        const bool inside = std::abs(o.x) <= half.x && std::abs(o.y) <= half.y;
+        const bool expected = !parallelMiss && !inside && enter >= 0.0 && enter <= leave && enter <= 100.0;
+        const auto hit = rayCast(world, origin, direction, 100.0);
+        INFO("trial " << trial << ": expected " << expected << " at " << enter);
+        REQUIRE(hit.has_value() == expected);
+        if (!hit) {
+            ++misses;
+            continue;
+        }
+        ++hits;
+        CHECK(hit->shape == RayHit::Shape::body);
+        CHECK(hit->slot == 0);
+        CHECK(hit->distance == Approx(enter).margin(1e-9));
+        // The normal is a face's: unit, against the ray, and the point lies on that face's line.
+        CHECK(hit->normal.length() == Approx(1.0).margin(1e-12));
+        CHECK(hit->normal.dot(direction) < 0.0);
+        const Vec2 n = local(hit->normal);
+        const double reach = std::abs(n.x) > 0.5 ? half.x : half.y;
+        CHECK(local(hit->point - centre).dot(n) == Approx(reach).margin(1e-9));
+    }
+    CHECK(hits > 200);
+    CHECK(misses > 200);
+
+    // A capsule body is met as a capsule segment is: square to its side, r before its core line.
+    World world;
+    RigidBodyDef capsule;
+    capsule.shape = BodyShape::capsule;
+    capsule.position = {3.0, 1.0};
+    capsule.halfExtents = {1.0, 0.2};       // core 2 m long, radius 0.2 m
+    capsule.angle = std::numbers::pi / 2.0; // standing up: its core runs from y = 0 to y = 2
+    world.addBody(capsule);
+    const auto side = rayCast(world, {0.0, 1.5}, {1.0, 0.0}, 100.0);
+    REQUIRE(side);
+    CHECK(side->shape == RayHit::Shape::body);
+    CHECK(side->distance == Approx(2.8).margin(1e-12));
+    const auto cap = rayCast(world, {3.0, 5.0}, {0.0, -1.0}, 100.0);
+    REQUIRE(cap);
+    CHECK(cap->distance == Approx(5.0 - 2.0 - 0.2).margin(1e-12));
+    CHECK_FALSE(rayCast(world, {3.0, 1.0}, {1.0, 0.0}, 100.0)); // from inside
+}

@@ -10,7 +10,9 @@
 /// t = (r - (origin - a) . n) / (d . n) from the side the ray approaches. Only surfaces the ray
 /// enters count: a ray that starts on or inside a shape (a beam leaving a mirror it just struck)
 /// does not meet that shape again.
-/// Rigid bodies (boxes, capsules that turn) are not cast against.
+/// Rigid bodies count too: a capsule as a segment's capsule, a box by clipping the ray against its
+/// four faces' half-planes (Cyrus-Beck): it enters at the largest t of the faces it crosses inwards,
+/// if that comes before the smallest t of those it crosses outwards.
 
 #include "rube/physics/vec2.hpp"
 
@@ -23,16 +25,16 @@ class World;
 
 /// What a ray met first.
 struct RayHit {
-    enum class Shape : std::uint8_t { circle, segment };
+    enum class Shape : std::uint8_t { circle, segment, body };
     Shape shape = Shape::circle;
-    int slot = -1;         ///< the circle's or segment's slot in World::circles() or segments()
+    int slot = -1;         ///< the circle's, segment's or body's slot in World::circles(), segments() or bodies()
     double distance = 0.0; ///< t: how far along the ray, m
     Vec2 point;            ///< where: origin + distance * direction
     Vec2 normal;           ///< the unit normal of the surface there, pointing out of the shape (against the ray)
 };
 
-/// The first circle or segment surface the ray from `origin` along unit `direction` enters within
-/// `maxDistance` m, if any. Every circle counts (dynamic, kinematic and fixed), every enabled segment.
+/// The first circle, segment, box or capsule surface the ray from `origin` along unit `direction`
+/// enters within `maxDistance` m, if any. Every enabled body counts, whatever its motion.
 std::optional<RayHit> rayCast(const World& world, Vec2 origin, Vec2 direction, double maxDistance);
 
 /// The ray from `origin` along unit `direction` against one circle: the distance at which it enters,

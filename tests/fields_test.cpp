@@ -4,10 +4,14 @@
 #include "rube/physics/fields.hpp"
 #include "rube/physics/world.hpp"
 
+#include "rigid_water.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <utility>
 
 using namespace rube;
 
@@ -305,5 +309,118 @@ TEST_CASE("fields: a ball far lighter than its water floats at Archimedes' depth
                 }
             }
         }
+    }
+}
+
+namespace {
+
+/// A solver world with one pool of `rho` (and `drag`) under y = 0, and one dynamic body.
+World poolWorld(double rho, double drag, double rate = 60.0) {
+    WorldDef def;
+    def.gravity = {0.0, -9.81};
+    def.method = Method::solver;
+    def.timeStep = 1.0 / rate;
+    World world(def);
+    world.fields().waters.push_back(Water{{-20.0, -20.0}, {20.0, 0.0}, rho, drag});
+    return world;
+}
+
+RigidBodyDef floater(BodyShape shape, Vec2 half, double mass, double angle = 0.0) {
+    RigidBodyDef d;
+    d.shape = shape;
+    d.halfExtents = half;
+    d.mass = mass;
+    d.angle = angle;
+    d.position = {0.0, 0.0};
+    return d;
+}
+
+} // namespace
+
+TEST_CASE("fields: a box floats upright with its density ratio's share of its height under water", "[fields][water]") {
+    // rho_water A_under g = m g: a flat box (wide, so upright is stable) of density ratio s floats with
+    // s of its height h under the surface, its centre at h (1/2 - s) above it. Boxes once fell through.
+    for (const double ratio : {0.2, 0.5, 0.8}) {
+        for (const auto& [w, h] : {std::pair{1.0, 0.4}, std::pair{2.0, 0.5}, std::pair{0.6, 0.3}}) {
+            World world = poolWorld(8.0, 5.0);
+            const double mass = ratio * 8.0 * w * h;
+            const BodyId id = world.addBody(floater(BodyShape::box, {0.5 * w, 0.5 * h}, mass));
+            world.setPosition(id, {0.0, 0.5 * h + 0.2}); // dropped from 0.2 m above the water
+            double highest = -1e9;
+            for (int i = 0; i < 60 * 20; ++i) {
+                world.step();
+                if (i > 60 * 2) highest = std::max(highest, world.bodies()[0].position.y);
+            }
+            const RigidBody& b = world.bodies()[0];
+            INFO("ratio " << ratio << ", box " << w << " x " << h << ": centre " << b.position.y << ", angle "
+                          << b.angle << " (expected " << h * (0.5 - ratio) << ")");
+            CHECK(b.position.y == Approx(h * (0.5 - ratio)).margin(0.01 * h));
+            CHECK(std::abs(b.angle) < 1e-6);
+            CHECK(std::abs(b.position.x) < 1e-9);
+            CHECK(highest < 0.5 * h + 0.2); // never thrown higher than it fell from
+        }
+    }
+}
+
+TEST_CASE("fields: a tall box floating upright rolls onto its side; a box denser than the water sinks at "
+          "g (1 - rho_w / rho_b)",
+          "[fields][water]") {
+    // A box of half the water's density, four times as tall as wide: its centre of buoyancy moves the
+    // wrong way when it tilts, so a slight tilt grows until it lies flat (its long side along the surface).
+    {
+        World world = poolWorld(8.0, 5.0);
+        const double w = 0.25, h = 1.0;
+        world.addBody(floater(BodyShape::box, {0.5 * w, 0.5 * h}, 0.5 * 8.0 * w * h, 0.02));
+        for (int i = 0; i < 60 * 20; ++i) world.step();
+        const RigidBody& b = world.bodies()[0];
+        const double fromFlat = std::abs(std::remainder(b.angle, std::numbers::pi)) - 0.5 * std::numbers::pi;
+        INFO("angle " << b.angle << ", centre " << b.position.y);
+        CHECK(std::abs(fromFlat) < 0.02);
+        CHECK(b.position.y == Approx(0.0).margin(0.01)); // lying flat, half under
+    }
+    // Twice the water's density, no drag: it falls at g (1 - 1/2) once wholly under.
+    {
+        World world = poolWorld(8.0, 0.0);
+        const double w = 0.5, h = 0.5;
+        const BodyId id = world.addBody(floater(BodyShape::box, {0.5 * w, 0.5 * h}, 2.0 * 8.0 * w * h));
+        world.setPosition(id, {0.0, -1.0});
+        for (int i = 0; i < 30; ++i) world.step();
+        const double v0 = world.bodies()[0].velocity.y;
+        for (int i = 0; i < 60; ++i) world.step();
+        const double a = (world.bodies()[0].velocity.y - v0) / 1.0;
+        CHECK(a == Approx(-9.81 * 0.5).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("fields: a capsule floats with its density ratio's share of its area under water; a light box on "
+          "dense water stays put",
+          "[fields][water]") {
+    for (const double ratio : {0.25, 0.5, 0.75}) {
+        World world = poolWorld(8.0, 5.0);
+        const Vec2 half{0.5, 0.2}; // core 1 m, radius 0.2 m: lying flat
+        const double area = 4.0 * half.x * half.y + std::numbers::pi * half.y * half.y;
+        world.addBody(floater(BodyShape::capsule, half, ratio * 8.0 * area));
+        for (int i = 0; i < 60 * 20; ++i) world.step();
+        const RigidBody& b = world.bodies()[0];
+        const Submerged under = submergedPart(b, world.fields().waters[0]);
+        INFO("ratio " << ratio << ": under " << under.area / area << " of the capsule, angle " << b.angle);
+        // The caps are polygons: their area is within 0.7 % of the true one.
+        CHECK(under.area / area == Approx(ratio).margin(0.01));
+        CHECK(std::abs(b.angle) < 1e-6);
+    }
+    // 10 g, 0.3 m square, on 1000 kg/m^2 water: far stiffer than the step; it must neither fly nor sink.
+    for (const double rate : {30.0, 60.0, 240.0}) {
+        World world = poolWorld(1000.0, 1000.0, rate);
+        const BodyId id = world.addBody(floater(BodyShape::box, {0.15, 0.15}, 0.01));
+        world.setPosition(id, {0.0, 0.15});
+        double highest = -1e9, lowest = 1e9;
+        for (int i = 0; i < static_cast<int>(8 * rate); ++i) {
+            world.step();
+            highest = std::max(highest, world.bodies()[0].position.y);
+            lowest = std::min(lowest, world.bodies()[0].position.y);
+        }
+        INFO(rate << " Hz: between " << lowest << " and " << highest);
+        CHECK(highest < 0.15 + 0.01);
+        CHECK(lowest > 0.15 - 0.01);
     }
 }

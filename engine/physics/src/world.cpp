@@ -4,6 +4,7 @@
 #include "field_pass.hpp"
 #include "kinematic_pose.hpp"
 #include "quiet_step.hpp"
+#include "rigid_water.hpp"
 #include "rope_constraint.hpp"
 #include "solver_sleep.hpp"
 #include "speed_limits.hpp"
@@ -231,6 +232,8 @@ void World::step() {
     if (!fields_.thrusters.empty()) resolveThrusters();
     if (def_.airDrag.active() || !fields_.empty())
         applyFields(circles_, fields_, tables_->thrusterSlots, def_.airDrag, def_.gravity, time_, dt);
+    // Boxes and capsules feel the pools (rigid_water.hpp); the other fields act on circles only.
+    if (!fields_.waters.empty() && !bodies_.empty()) floatRigidBodies(bodies_, fields_.waters, def_.gravity, dt);
     applyGravityScales(dt);
     if (!bodies_.empty()) requireRigidBodyMethod(def_.method, bodies_, pivots_);
     if (!joints_.empty()) requireJointMethod(def_.method, joints_, circles_, def_.gravity, !bodies_.empty());

@@ -362,8 +362,8 @@ TEST_CASE("fields: a box floats upright with its density ratio's share of its he
     }
 }
 
-TEST_CASE("fields: a tall box floating upright rolls onto its side; a box denser than the water sinks at "
-          "g (1 - rho_w / rho_b)",
+TEST_CASE("fields: a tall box floating upright rolls onto its side, and a box denser than the water sinks "
+          "at g (1 - rho_w / rho_b)",
           "[fields][water]") {
     // A box of half the water's density, four times as tall as wide: its centre of buoyancy moves the
     // wrong way when it tilts, so a slight tilt grows until it lies flat (its long side along the surface).
@@ -392,8 +392,8 @@ TEST_CASE("fields: a tall box floating upright rolls onto its side; a box denser
     }
 }
 
-TEST_CASE("fields: a capsule floats with its density ratio's share of its area under water; a light box on "
-          "dense water stays put",
+TEST_CASE("fields: a capsule floats with its density ratio's share of its area under water, and a light "
+          "box on dense water stays put",
           "[fields][water]") {
     for (const double ratio : {0.25, 0.5, 0.75}) {
         World world = poolWorld(8.0, 5.0);

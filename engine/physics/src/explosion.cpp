@@ -63,9 +63,7 @@ ExplosionPushed applyExplosion(World& world, const Explosion& explosion) {
         pushed.circles.push_back(world.circleId(slot));
         world.setVelocity(pushed.circles.back(), circles[static_cast<std::size_t>(slot)].velocity);
     }
-    // Boxes and capsules: the same impulse through the centre of mass. Their handles first: a setter
-    // may not move a slot, but the list is read before any is written all the same.
-    std::vector<std::pair<BodyId, Vec2>> kicks;
+    // Boxes and capsules: the same impulse through the centre of mass (a setter wakes, never moves a slot).
     const auto bodies = world.bodies();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& b = bodies[i];
@@ -73,12 +71,9 @@ ExplosionPushed applyExplosion(World& world, const Explosion& explosion) {
         double distance = 0.0;
         const Vec2 direction = blastDirection(explosion, b.position, distance);
         if (!(distance < explosion.radius)) continue;
-        kicks.emplace_back(world.bodyId(static_cast<int>(i)),
-                           b.velocity + direction * (explosionImpulse(explosion, distance) * b.inverseMass));
-    }
-    for (const auto& [id, velocity] : kicks) {
-        world.setVelocity(id, velocity);
-        pushed.bodies.push_back(id);
+        pushed.bodies.push_back(world.bodyId(static_cast<int>(i)));
+        world.setVelocity(pushed.bodies.back(),
+                          b.velocity + direction * (explosionImpulse(explosion, distance) * b.inverseMass));
     }
     return pushed;
 }

@@ -48,7 +48,8 @@ Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
     if (c.position.x < water.min.x || c.position.x > water.max.x || c.position.y - c.radius > water.max.y ||
         c.position.y + c.radius < water.min.y)
         return {};
-    const double area = submergedArea(c.radius, c.position.y - water.max.y);
+    const double height = c.position.y - water.max.y; // the centre above the surface
+    const double area = submergedArea(c.radius, height);
     if (area <= 0.0) return {};
     const double fullArea = std::numbers::pi * c.radius * c.radius;
     // Drag, exact as for the wind: dv/dt = -k v with k = 2r drag (A / pi r^2) / m.
@@ -62,7 +63,6 @@ Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
     // acceleration now (implicit Euler on the linearised spring: stable at any stiffness), and the drag
     // then slows that velocity, not the one the step began with (summed, the two would both undo v0).
     // Below it, as in every shipped scene and level, the kicks are as before.
-    const double height = c.position.y - water.max.y;
     const double g = gravity.length();
     if (g > 0.0 && std::abs(height) < c.radius) {
         // Along up = -g / |g|, the surface (y = const) is crossed at up.y of the speed.

@@ -339,7 +339,7 @@ template <class V>
     for (int j = 0; j < (allTogether ? 0 : s.count); ++j) {
         RigidBlockPoint& p = k.points[j];
         const bool all = !anyTogether && at.all(k.pointLanes[j]);
-        const MaskOf<V> has = anyTogether ? at.mask(k.pointMask[j]) & ~together : at.mask(k.pointMask[j]);
+        const MaskOf<V> has = at.mask(k.pointMask[j]) & ~together;
         const V rAx = at(p.armAx), rAy = at(p.armAy), rBx = at(p.armBx), rBy = at(p.armBy);
         const V vn = alongPoint(a, b, rAx, rAy, rBx, rBy, nx, ny);
         const V old = at(p.normalImpulse);
@@ -349,16 +349,11 @@ template <class V>
         const V px = nx * delta, py = ny * delta;
         a.template apply<true>(all, has, rAx, rAy, px, py);
         b.apply(all, has, rBx, rBy, px, py);
+        // The lanes solved together keep theirs, for the pass below.
         const V delivered = at(p.deliveredNormal), most = at(p.maxNormalImpulse);
-        if (anyTogether) {
-            at.set(p.normalImpulse, together ? old : total);
-            at.set(p.deliveredNormal, together ? delivered : delivered + delta);
-            at.set(p.maxNormalImpulse, together ? most : maxOf(most, total));
-        } else {
-            at.set(p.normalImpulse, total);
-            at.set(p.deliveredNormal, delivered + delta);
-            at.set(p.maxNormalImpulse, maxOf(most, total));
-        }
+        at.set(p.normalImpulse, together ? old : total);
+        at.set(p.deliveredNormal, together ? delivered : delivered + delta);
+        at.set(p.maxNormalImpulse, together ? most : maxOf(most, total));
     }
     // The pairs' impulses, point 1 then point 2, on the velocities the loop above left untouched.
     if (anyTogether)
@@ -367,8 +362,9 @@ template <class V>
             const V old = at(p.normalImpulse), total = pairTotal[j];
             const V delta = total - old;
             const V px = nx * delta, py = ny * delta;
-            a.template apply<true>(allTogether && at.all(k.pointLanes[0]), together, at(p.armAx), at(p.armAy), px, py);
-            b.apply(allTogether && at.all(k.pointLanes[0]), together, at(p.armBx), at(p.armBy), px, py);
+            const bool all = allTogether && at.all(k.pointLanes[0]);
+            a.template apply<true>(all, together, at(p.armAx), at(p.armAy), px, py);
+            b.apply(all, together, at(p.armBx), at(p.armBy), px, py);
             const V delivered = at(p.deliveredNormal), most = at(p.maxNormalImpulse);
             at.set(p.normalImpulse, together ? total : old);
             at.set(p.deliveredNormal, together ? delivered + delta : delivered);

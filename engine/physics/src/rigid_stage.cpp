@@ -287,7 +287,7 @@ void RigidStage::findContacts(const StepContext& ctx, double dt) {
             // A conveyor carries what rubs on it: its belt runs along a -> b (as the circles' FrictionBody).
             if (seg.surfaceSpeed != 0.0 && madeBySegment_.size() > before) {
                 RigidContact& c = madeBySegment_.back();
-                c.tangentSpeed = c.tangent.dot((seg.b - seg.a).normalized() * seg.surfaceSpeed);
+                c.tangentSpeed = c.tangent.dot(seg.beltVelocity());
             }
         }
     }

@@ -1,6 +1,8 @@
 // Boxes and capsules in water (rigid_water.hpp).
 #include "rigid_water.hpp"
 
+#include "rigid_solver_body.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,9 +25,7 @@ struct Polygon {
 Polygon outlineOf(const RigidBody& b) {
     Polygon p;
     const Vec2 q = Vec2::fromAngle(b.angle);
-    const auto place = [&](Vec2 local) {
-        return b.position + Vec2{q.x * local.x - q.y * local.y, q.y * local.x + q.x * local.y};
-    };
+    const auto place = [&](Vec2 local) { return b.position + rotate(q, local); };
     const double hx = b.halfExtents.x, hy = b.halfExtents.y;
     if (b.shape == BodyShape::box) {
         for (const Vec2 corner : {Vec2{-hx, -hy}, Vec2{hx, -hy}, Vec2{hx, hy}, Vec2{-hx, hy}})
@@ -77,16 +77,15 @@ Submerged areaOf(const Polygon& p) {
 
 } // namespace
 
-double outlineArea(const RigidBody& b) { return areaOf(outlineOf(b)).area; }
-
 Submerged submergedPart(const RigidBody& b, const Water& water) {
-    Polygon p = outlineOf(b);
-    p = clip(p, {0.0, 1.0}, water.max.y);   // under the surface
+    const Polygon outline = outlineOf(b);
+    Polygon p = clip(outline, {0.0, 1.0}, water.max.y); // under the surface
     p = clip(p, {0.0, -1.0}, -water.min.y); // above the pool's floor
     p = clip(p, {1.0, 0.0}, water.max.x);
     p = clip(p, {-1.0, 0.0}, -water.min.x);
     Submerged s = areaOf(p);
     if (s.area <= 0.0) return s;
+    s.whole = areaOf(outline).area;
     // The waterline: the clipped outline's points on the surface, their extent along it.
     double lo = 0.0, hi = 0.0;
     bool any = false;
@@ -114,7 +113,6 @@ void floatRigidBodies(std::span<RigidBody> bodies, std::span<const Water> waters
                 continue;
             const Submerged s = submergedPart(b, water);
             if (s.area <= 0.0) continue;
-            const double whole = outlineArea(b);
             // Archimedes: the displaced water's weight, rho A |g|, against gravity at the centroid of
             // what is displaced: Delta v = J / m, Delta omega = (r x J) / I (lecture 3).
             const double impulse = water.density * s.area * g * dt;
@@ -129,8 +127,8 @@ void floatRigidBodies(std::span<RigidBody> bodies, std::span<const Water> waters
             const double turnStiffness = dt * dt * g * water.density * w3 / 12.0 * b.inverseInertia;
             if (turnStiffness > 1.0) dw = (b.angularVelocity + dw) / (1.0 + turnStiffness) - b.angularVelocity;
             // Drag, exact for dv/dt = -k v: the rate a circle of the same area would feel.
-            const double width = 2.0 * std::sqrt(whole / std::numbers::pi);
-            const double k = width * water.drag * (s.area / whole) * b.inverseMass;
+            const double width = 2.0 * std::sqrt(s.whole / std::numbers::pi);
+            const double k = width * water.drag * (s.area / s.whole) * b.inverseMass;
             const double slow = std::expm1(-k * dt);
             if (stiffness > 1.0) {
                 // The body's own gravity, which the method adds after this kick.

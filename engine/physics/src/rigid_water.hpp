@@ -22,11 +22,9 @@ struct Submerged {
     double area = 0.0;
     Vec2 centroid;
     double waterline = 0.0; ///< the width of the body at the surface, m (what a rise uncovers per metre)
+    double whole = 0.0;     ///< the whole outline's area (a capsule's with polygonal caps), when any is under
 };
 Submerged submergedPart(const RigidBody& b, const Water& water);
-
-/// The area of the body's outline (a capsule's with polygonal caps, as submergedPart sees it).
-double outlineArea(const RigidBody& b);
 
 /// Changes each dynamic body's velocity and spin by what the pools do over dt: buoyancy rho A |g|
 /// against gravity at the submerged centroid, and drag slowing both velocity and spin at the rate a

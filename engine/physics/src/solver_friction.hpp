@@ -50,9 +50,7 @@ inline void buildFrictionBodies(std::span<const Circle> circles, std::span<const
     for (std::size_t i = 0; i < circles.size(); ++i)
         out[i] = {circles[i].radius, circles[i].inverseInertia * circles[i].radius, {}};
     for (std::size_t s = 0; s < segments.size(); ++s)
-        if (segments[s].surfaceSpeed != 0.0)
-            out[circles.size() + s].surfaceVelocity = (segments[s].b - segments[s].a).normalized() *
-                                                      segments[s].surfaceSpeed;
+        if (segments[s].surfaceSpeed != 0.0) out[circles.size() + s].surfaceVelocity = segments[s].beltVelocity();
 }
 
 /// The friction terms of `contacts` (mu from `friction(k)`; circles are solver bodies 0..n-1), each

@@ -83,6 +83,8 @@ struct Segment {
     double pivotAlong = 0.5;   ///< where along a->b it turns when its path turns: 0 at a, 1 at b
     double angularVelocity = 0.0; ///< omega about the pivot during the current step, rad/s (turning paths only)
     Motion motion() const { return path >= 0 ? Motion::kinematic : Motion::fixed; }
+    /// A conveyor's belt velocity: surfaceSpeed along a->b (what friction carries a body towards).
+    Vec2 beltVelocity() const { return (b - a).normalized() * surfaceSpeed; }
     /// The velocity of its surface at `point`: v + omega x r, r from the pivot (lecture 3's point velocity).
     Vec2 velocityAt(Vec2 point) const {
         // Exactly `velocity` when it does not turn, so translating paths give bit-identical results.

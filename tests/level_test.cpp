@@ -568,8 +568,9 @@ TEST_CASE("seesaw: the heavy ball turns the seesaw only from left of the pivot, 
     // contacts are solved in colours (issue 26: another Gauss-Seidel order; the dominoes fall at the same steps).
     // 295 since auto lets its solver islands of boxes sleep (issue 26): the settled dominoes rest until struck.
     // 297 since a contact's two points are solved together (rigid_normal_pair.hpp): a domino no longer
-    // turns where it lands on both corners.
-    CHECK(*solved.goal == 297);
+    // turns where it lands on both corners. 296 since the dominoes' contacts with each other and the
+    // floor stack (RigidContact::stacking: stiffer, relaxed once), and fall a step sooner.
+    CHECK(*solved.goal == 296);
     // Turned over: left end down on the floor, 1.5 sin a + 0.05 cos a = 0.6, a = 0.378 rad.
     CHECK(solved.plankAngle == Approx(0.378).margin(0.005));
     CHECK(solved.heavyLeftmost > -0.3); // the gate stopped the heavy ball: only the striker went on

@@ -55,6 +55,7 @@ Scene randomScene(std::mt19937_64& rng, int n, int m) {
         c.tangent = c.normal.perpendicular();
         c.friction = u(rng) > 0.0 ? 0.6 + 0.3 * u(rng) : 0.0;
         c.tangentSpeed = u(rng) > 0.5 ? 2.0 * u(rng) : 0.0; // some run on a conveyor's belt
+        c.stacking = u(rng) > 0.3;                          // a stack's softness, or the others'
         c.againstFixed = s.bodies[static_cast<std::size_t>(c.bodyA)].inverseMass == 0.0 ||
                          s.bodies[static_cast<std::size_t>(c.bodyB)].inverseMass == 0.0;
         c.count = u(rng) > -0.3 ? 2 : 1;
@@ -130,6 +131,8 @@ RigidContactSoftness softness() {
     RigidContactSoftness s;
     s.movable = makeSoftness(60.0, 10.0, 1.0 / 480.0);
     s.fixed = makeSoftness(120.0, 10.0, 1.0 / 480.0);
+    s.stackMovable = makeSoftness(70.0, 10.0, 1.0 / 480.0);
+    s.stackFixed = makeSoftness(140.0, 10.0, 1.0 / 480.0);
     return s;
 }
 
@@ -228,7 +231,7 @@ TEST_CASE("a colour solved four contacts at a time in blocks gives the bits of t
                 refreshBlockArms(blocks.all(), wide.bodies, code);
                 for (int sweep = 0; sweep < 3; ++sweep) {
                     solveRigidContacts(one.contacts, one.bodies, softness(), 1.0 / 480.0, useBias);
-                    solveBlocks(blocks.all(), wide.bodies, softness(), 1.0 / 480.0, useBias, code);
+                    solveBlocks(blocks.all(), wide.bodies, softness(), 1.0 / 480.0, useBias, false, code);
                 }
                 blocks.unpack(wide.contacts);
                 requireSameBits(one, wide);

@@ -55,6 +55,7 @@ void packLane(RigidBlock& k, int lane, const RigidContact& c, int index, std::sp
     k.bodyB[lane] = c.bodyB;
     k.contact[lane] = index;
     k.againstFixed[lane] = c.againstFixed;
+    k.stacking[lane] = c.stacking;
     for (int j = 0; j < c.count; ++j) {
         const RigidContactPoint& p = c.points[j];
         RigidBlockPoint& q = k.points[j];
@@ -105,13 +106,19 @@ void RigidBlocks::pack(std::span<const RigidContact> contacts, const RigidColour
             RigidBlock& k = blocks_[b];
             k = RigidBlock{};
             packLane(k, 0, contacts[static_cast<std::size_t>(i)], i, bodies);
+            k.everyRelax = !contacts[static_cast<std::size_t>(i)].stacking;
             for (int lane = 1; lane < kBlockLanes; ++lane) {
-                if (lane < lanes && i + lane < end)
-                    packLane(k, lane, contacts[static_cast<std::size_t>(i + lane)], i + lane, bodies);
-                else standIn(k, lane);
+                if (lane < lanes && i + lane < end) {
+                    const RigidContact& c = contacts[static_cast<std::size_t>(i + lane)];
+                    packLane(k, lane, c, i + lane, bodies);
+                    k.everyRelax = k.everyRelax || !c.stacking;
+                } else {
+                    standIn(k, lane);
+                }
             }
         }
     });
+    anyEveryRelax_ = std::any_of(blocks_.begin(), blocks_.end(), [](const RigidBlock& k) { return k.everyRelax; });
 }
 
 void RigidBlocks::unpack(std::span<RigidContact> contacts, WorkerPool* pool) const {
@@ -151,6 +158,7 @@ struct Pass {
     double h = 0.0;
     double maxTurn = 0.0;
     bool useBias = false;
+    bool everyRelaxOnly = false;
 };
 
 /// The pass over its blocks with vector V: a whole block at once, or half of it at a time.
@@ -174,9 +182,11 @@ template <class V>
         break;
     case Pass::solve: {
         const double invH = 1.0 / pass.h;
-        for (RigidBlock& k : pass.blocks)
+        for (RigidBlock& k : pass.blocks) {
+            if (pass.everyRelaxOnly && !k.everyRelax) continue;
             for (int base = 0; base < kBlockLanes; base += W)
                 solveSlice<V>(k, base, pass.bodies, *pass.softness, invH, pass.useBias);
+        }
         break;
     }
     }
@@ -236,8 +246,8 @@ void warmStartBlocks(std::span<RigidBlock> blocks, std::span<RigidState> bodies,
 }
 
 void solveBlocks(std::span<RigidBlock> blocks, std::span<RigidState> bodies, const RigidContactSoftness& softness,
-                 double h, bool useBias, LaneCode code) {
-    dispatch(Pass{Pass::solve, blocks, bodies, {}, 0, &softness, h, 0.0, useBias}, code);
+                 double h, bool useBias, bool everyRelaxOnly, LaneCode code) {
+    dispatch(Pass{Pass::solve, blocks, bodies, {}, 0, &softness, h, 0.0, useBias, everyRelaxOnly}, code);
 }
 
 } // namespace rube

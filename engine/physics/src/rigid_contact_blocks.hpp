@@ -54,7 +54,10 @@ struct RigidBlock {
     RigidBlockPoint points[2];
     int bodyA[kBlockLanes] = {}, bodyB[kBlockLanes] = {};
     int contact[kBlockLanes] = {}; ///< the lane's place in the contact list; -1: a stand-in that writes nothing
-    bool againstFixed[kBlockLanes] = {};
+    bool againstFixed[kBlockLanes] = {}, stacking[kBlockLanes] = {};
+    /// Some real lane's contact is not stacking (RigidContact::stacking): the block takes every relax
+    /// pass, as the joints do (solveBlocks' everyRelaxOnly).
+    bool everyRelax = false;
     /// The masks above as bits (lane i: bit i), and which lanes may write their body A or B: a real
     /// lane whose body can move (movableBody).
     unsigned pointLanes[2] = {}, rubbingLanes[2] = {}, writesA = 0, writesB = 0;
@@ -74,9 +77,12 @@ public:
     /// Blocks [start(c), start(c + 1)) hold colour c; colour kRigidColours is the overflow.
     std::size_t start(int colour) const { return starts_[static_cast<std::size_t>(colour)]; }
     std::span<RigidBlock> all() { return blocks_; }
+    /// Whether some block takes every relax pass (RigidBlock::everyRelax).
+    bool anyEveryRelax() const { return anyEveryRelax_; }
 
 private:
     std::vector<RigidBlock> blocks_;
+    bool anyEveryRelax_ = false;
     std::size_t starts_[kRigidColours + 2] = {};
 };
 
@@ -126,9 +132,10 @@ void measureBlockApproach(std::span<RigidBlock> blocks, std::span<RigidContact> 
                           int substep, LaneCode code = LaneCode::best);
 
 /// solveRigidContacts for the blocks: one Gauss-Seidel sweep, the lanes of a block at once
-/// (rigid_contact_lanes.hpp), the blocks in order.
+/// (rigid_contact_lanes.hpp), the blocks in order; with `everyRelaxOnly`, only the blocks that
+/// take every relax pass (RigidBlock::everyRelax).
 void solveBlocks(std::span<RigidBlock> blocks, std::span<RigidState> bodies, const RigidContactSoftness& softness,
-                 double h, bool useBias, LaneCode code = LaneCode::best);
+                 double h, bool useBias, bool everyRelaxOnly = false, LaneCode code = LaneCode::best);
 
 static_assert(alignof(RigidBlock) == sizeof(Lanes), "the sweep loads a block's fields with aligned loads");
 

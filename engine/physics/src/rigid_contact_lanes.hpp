@@ -293,7 +293,7 @@ template <class V>
     V softBias = zero, softMass = one, softImpulse = zero;
     if (useBias)
         for (int i = 0; i < W; ++i) {
-            const Softness& soft = k.againstFixed[base + i] ? softness.fixed : softness.movable;
+            const Softness& soft = softness.of(k.stacking[base + i], k.againstFixed[base + i]);
             softBias[i] = soft.biasRate;
             softMass[i] = soft.massScale;
             softImpulse[i] = soft.impulseScale;

@@ -170,7 +170,7 @@ void solveRigidContacts(std::span<RigidContact> contacts, std::span<RigidState> 
         RigidState& sa = bodies[static_cast<std::size_t>(c.bodyA)];
         RigidState& sb = bodies[static_cast<std::size_t>(c.bodyB)];
         LoadedBody a = loadBody(sa), b = loadBody(sb);
-        const Softness& soft = c.againstFixed ? softness.fixed : softness.movable;
+        const Softness& soft = softness.of(c.stacking, c.againstFixed);
         const Vec2 dp = b.displacement - a.displacement;
         double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0};
         for (int k = 0; k < c.count; ++k) {

@@ -45,6 +45,10 @@ struct RigidContact {
     Vec2 normal;               ///< unit, from A towards B
     Vec2 tangent;              ///< the normal turned a quarter anticlockwise: friction's direction
     bool againstFixed = false; ///< a side cannot be moved: the contact takes the stiffer softness
+    /// Between two shapes (boxes, capsules, planks, lines) of which no pivot or joint holds either:
+    /// a contact of a stack or a heap, stiffer and relaxed once (RigidContactSoftness; method_solver.cpp,
+    /// kRigidContactRelaxPasses). Not: a ball's contacts and a mechanism's.
+    bool stacking = false;
     double friction = 0.0;   ///< mu of the pair: the product of both materials' (as circle pairs)
     double bounciness = 0.0; ///< C of the pair: the product of both materials'
     /// How fast B's surface runs along the tangent on its own (a conveyor's belt: t . its surface
@@ -62,9 +66,15 @@ RigidContact makeRigidContact(const RigidSolverView& view, BodySide a, BodySide 
 /// The contact stiffness: a soft spring against a movable body, and one twice as stiff against
 /// infinite mass (it moves one body only), as the circle contacts are.
 struct RigidContactSoftness {
-    Softness movable;
-    Softness fixed;
+    Softness movable;          ///< between two movable bodies
+    Softness fixed;            ///< against infinite mass
+    Softness stackMovable;     ///< a stacking contact (RigidContact::stacking) between two movable bodies
+    Softness stackFixed;       ///< a stacking contact against infinite mass
     double maxPushSpeed = 3.0; ///< m/s: deep overlaps are pushed out no faster
+    /// The softness of a contact, stacking or not, against infinite mass or not.
+    const Softness& of(bool stacking, bool againstFixed) const {
+        return stacking ? (againstFixed ? stackFixed : stackMovable) : (againstFixed ? fixed : movable);
+    }
 };
 
 /// The functions below act on the rigid stage's solver bodies, indexed by bodyA and bodyB. The stage

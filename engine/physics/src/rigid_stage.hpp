@@ -43,8 +43,10 @@ public:
     void integrateVelocities(Vec2 gravityStep);
     /// Substep stage: contacts note their approach speeds, then pivots and contacts apply last substep's impulses.
     void warmStart();
-    /// Substep stage: pivots then contacts, with soft position feedback when `useBias` (else a relax pass).
-    void solve(double h, bool useBias);
+    /// Substep stage: pivots then contacts, with soft position feedback when `useBias` (else a relax
+    /// pass); with `everyRelaxOnly`, of the contacts only the blocks that take every relax pass
+    /// (RigidBlock::everyRelax: any but the stacking contacts).
+    void solve(double h, bool useBias, bool everyRelaxOnly = false);
     /// Substep stage: displacement and turn of every rigid body.
     void integratePositions(double h);
     /// Restitution once per step.
@@ -77,6 +79,10 @@ private:
     /// The solver body of a contact's side: a rigid body's own slot, or the circle solver's body's
     /// place in the compact list after the rigid ones (added on first use).
     int solverBodyOf(BodySide side);
+    /// held_ from the step's pivots and joints, once the contacts have given the circles their solver bodies.
+    void markHeld(const StepContext& ctx);
+    /// Whether contact c (its solver bodies set) is a stacking one: RigidContact::stacking.
+    bool stacking(const RigidContact& c, std::size_t circleCount) const;
     /// Copies the listed circle-solver bodies' velocities, displacements and spins into their solver
     /// bodies (before a sweep over the contacts), and their velocities and spins back (after it), so
     /// rigid and circle contacts act on the same velocities in the same Gauss-Seidel order.
@@ -136,6 +142,7 @@ private:
     // each one's slot in made_ (or -1 - its slot in madeBySegment_), and its sides' solver bodies.
     std::vector<int> listed_;
     std::vector<RigidContactEnds> listedEnds_;
+    std::vector<std::uint8_t> held_; // per solver body: a pivot or joint holds it (markHeld)
     const RigidContact& listedContact(std::size_t k) const {
         const int source = listed_[k];
         return source >= 0 ? made_[static_cast<std::size_t>(source)]

@@ -76,6 +76,7 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     thickness_.resize(n);
     reach_.resize(n);
     shapes_.resize(n);
+    shapeKeys_.resize(n);
     boxes_.resize(n);
     const double gravityTravel = ctx.def.gravity.length() * dt * dt;
     // Each body's own slots only: any split among the workers gives the same states and shapes.
@@ -95,13 +96,29 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
             thickness_[i] = b.shape == BodyShape::box ? std::min(b.halfExtents.x, b.halfExtents.y) : b.halfExtents.y;
             startVelocity_[i] = s.velocity;
             startOmega_[i] = s.omega;
-            // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2.
-            reach_[i] = kSpeculativeDistance + (s.velocity.length() + std::abs(s.omega) * boundingRadius(b)) * dt +
+            // Over the step a point of the body moves at most (|v| + |omega| extent) dt + |g| dt^2. A body
+            // at rest (asleep, fixed) skips the call to hypot, which gives +0 for a zero vector too.
+            const double speed = s.velocity == Vec2{} ? 0.0 : s.velocity.length();
+            reach_[i] = kSpeculativeDistance + (speed + std::abs(s.omega) * boundingRadius(b)) * dt +
                         (dynamic ? gravityTravel : 0.0);
-            shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
+            // The shape (a sine, a cosine and four normals) only when the body has moved or changed
+            // since it was made: asleep and fixed bodies, most of a settled machine's, keep theirs.
+            const ShapeKey key{b.position, b.angle, b.halfExtents, b.shape, true};
+            if (!(shapeKeys_[i] == key)) {
+                shapes_[i] = makeRoundedPolygon(b, b.position, b.angle);
+                shapeKeys_[i] = key;
+            }
             boxes_[i] = boundsOf(shapes_[i], reach_[i]); // what the body may reach this step
         }
     });
+    // The bodies the substeps move. The others are still and no impulse reaches them (the sweeps
+    // write movable bodies only), so their displacement and turn stay zero: a settled machine's
+    // asleep bodies cost the substeps nothing.
+    movers_.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+        const RigidState& s = states_[i];
+        if (movableBody(s) || !(s.velocity == Vec2{}) || s.omega != 0.0) movers_.push_back(static_cast<int>(i));
+    }
     const double h = dt / std::max(1, ctx.def.substeps);
     substep_ = 0;
     substepTime_ = h;
@@ -420,9 +437,11 @@ void RigidStage::storeOthers() {
 }
 
 void RigidStage::integrateVelocities(Vec2 gravityStep) {
-    forShares(pool_, rigidCount_, kBodyChunk, [&](std::size_t first, std::size_t last) {
-        for (std::size_t i = first; i < last; ++i)
-            if (states_[i].inverseMass > 0.0) states_[i].velocity += gravityStep;
+    forShares(pool_, movers_.size(), kBodyChunk, [&](std::size_t first, std::size_t last) {
+        for (std::size_t k = first; k < last; ++k) {
+            RigidState& s = states_[static_cast<std::size_t>(movers_[k])];
+            if (s.inverseMass > 0.0) s.velocity += gravityStep;
+        }
     });
 }
 
@@ -463,8 +482,8 @@ void RigidStage::integratePositions(double h) {
     std::atomic<std::int64_t> clamps{0};
     const auto move = [&](std::size_t first, std::size_t last) {
         std::int64_t count = 0;
-        for (std::size_t i = first; i < last; ++i) {
-            RigidState& s = states_[i];
+        for (std::size_t k = first; k < last; ++k) {
+            RigidState& s = states_[static_cast<std::size_t>(movers_[k])];
             // No substep moves a body faster than the step's limits allow (issue 27: a wedged capsule's
             // spin fed back through its contacts within one step, 15 to 11,000 rad/s, then NaN).
             if (s.inverseMass > 0.0 || s.inverseInertia > 0.0)
@@ -482,14 +501,14 @@ void RigidStage::integratePositions(double h) {
     };
     if (worthSharing(pool_, rigidCount_, kBodyChunk)) {
         // Two phases: the arms read both bodies' turns.
-        const std::size_t sizes[2] = {rigidCount_, blocks.size()}, chunks[2] = {kBodyChunk, kBlockLoopChunk};
+        const std::size_t sizes[2] = {movers_.size(), blocks.size()}, chunks[2] = {kBodyChunk, kBlockLoopChunk};
         auto work = [&](int phase, std::size_t first, std::size_t last) {
             if (phase == 0) move(first, last);
             else arms(first, last);
         };
         pool_->run(2, sizes, chunks, work);
     } else {
-        move(0, rigidCount_);
+        move(0, movers_.size());
         arms(0, blocks.size());
     }
     clamps_ += clamps.load(std::memory_order_relaxed);

@@ -14,6 +14,7 @@
 #include "rigid_warm_start.hpp"
 #include "step_method.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -125,6 +126,24 @@ private:
     int substeps_ = 1;
     std::vector<double> reach_; // per rigid body: speculative margin for the step
     std::vector<RoundedPolygon> shapes_;   // per rigid body: its shape at the step's start
+    /// What a body's shape was made from, bit for bit: the same key, the same shape.
+    struct ShapeKey {
+        Vec2 position;
+        double angle = 0.0;
+        Vec2 halfExtents;
+        BodyShape shape = BodyShape::box;
+        bool made = false; // a new slot's key matches no body
+        bool operator==(const ShapeKey& o) const {
+            return made && o.made && same(position.x, o.position.x) && same(position.y, o.position.y) &&
+                   same(angle, o.angle) && same(halfExtents.x, o.halfExtents.x) &&
+                   same(halfExtents.y, o.halfExtents.y) && shape == o.shape;
+        }
+        static bool same(double x, double y) {
+            return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y);
+        }
+    };
+    std::vector<ShapeKey> shapeKeys_;      // per rigid body: what shapes_ holds was made from
+    std::vector<int> movers_;              // the rigid bodies the substeps move (prepare), in slot order
     std::vector<std::uint8_t> fast_;       // per rigid body: moved further than its half thickness (sweep)
     std::vector<std::int8_t> struckPoint_; // per contact: its point that struck, or none (recordImpacts)
     std::vector<Box> boxes_;               // per rigid body: the box it may reach this step

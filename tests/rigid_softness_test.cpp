@@ -2,7 +2,8 @@
 // spring of stiffness m omega^2 loaded by m g: it rests overlapped by g / omega^2, whatever its mass
 // (makeSoftness' soft constraint at rest: overlap = load / (m omega^2)). Against infinite mass the
 // spring is twice the contact's hertz: stacking contacts (two shapes, neither held by a pivot or
-// joint: RigidContact::stacking) are 70 Hz, so 140 Hz on the floor; a ball's are 60, so 120.
+// joint: RigidContact::stacking) are 70 Hz, so 140 Hz on the floor; a ball's and a held body's
+// (a mechanism's) are 60, so 120.
 #include "rube/physics/world.hpp"
 
 #include <catch2/catch.hpp>
@@ -64,6 +65,38 @@ TEST_CASE("a box resting on a fixed capsule's cap rests g / omega^2 into it, at 
                           << ", angle " << world.body(box).angle);
                 CHECK(overlap == Approx(restingOverlap(g, 140.0)).epsilon(1e-3));
             }
+}
+
+TEST_CASE("a box a joint holds rests on a fixed capsule's cap at a mechanism's 120 Hz", "[rigid][softness]") {
+    // The same box and hump, the box on a vertical slide from the world (a prismatic joint: free to
+    // fall, held upright and in place), so the contact still carries the whole weight.
+    for (const double g : {4.0, 9.81, 25.0})
+        for (const double mass : {0.05, 1.0, 40.0}) {
+            World world = floorWorld(g);
+            RigidBodyDef post;
+            post.shape = BodyShape::capsule;
+            post.halfExtents = {0.5, 0.3};
+            post.angle = 0.5 * std::numbers::pi;
+            post.position = {0.0, 0.8};
+            post.motion = Motion::fixed;
+            world.addBody(post);
+            RigidBodyDef d;
+            d.halfExtents = {0.4, 0.1};
+            d.position = {0.0, 1.7};
+            d.mass = mass;
+            d.material = {0.0, 0.5};
+            const BodyId box = world.addBody(d);
+            JointDef slide;
+            slide.kind = JointKind::prismatic;
+            slide.b.body = box;
+            slide.localAnchorA = {0.0, 1.7};
+            slide.localAxisA = {0.0, 1.0};
+            world.addJoint(slide);
+            for (int step = 0; step < 240; ++step) world.step();
+            const double overlap = 1.7 - world.body(box).position.y;
+            INFO("g " << g << " mass " << mass << ": overlap " << overlap);
+            CHECK(overlap == Approx(restingOverlap(g, 120.0)).epsilon(1e-3));
+        }
 }
 
 TEST_CASE("a ball resting on a fixed box rests g / omega^2 into it, at a ball's 120 Hz", "[rigid][softness]") {

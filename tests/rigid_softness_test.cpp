@@ -36,31 +36,39 @@ World floorWorld(double g) {
     return world;
 }
 
+/// Where the box laid on the hump (boxOnHump) starts: its centre's height, resting on one point.
+constexpr double kBoxStart = 1.7;
+
+/// A fixed capsule standing upright, its top cap (radius 0.3 m, top at y = 1.6) a hump, and a box
+/// 0.2 m thick laid on it, its centre over the hump: one point, its arm along the normal. A box that
+/// thick rocks back on a hump of radius above 0.1 m.
+BodyId boxOnHump(World& world, double halfWidth, double mass) {
+    RigidBodyDef post;
+    post.shape = BodyShape::capsule;
+    post.halfExtents = {0.5, 0.3};
+    post.angle = 0.5 * std::numbers::pi;
+    post.position = {0.0, 0.8};
+    post.motion = Motion::fixed;
+    world.addBody(post);
+    RigidBodyDef d;
+    d.halfExtents = {halfWidth, 0.1};
+    d.position = {0.0, kBoxStart};
+    d.mass = mass;
+    d.material = {0.0, 0.5};
+    return world.addBody(d);
+}
+
 } // namespace
 
 TEST_CASE("a box resting on a fixed capsule's cap rests g / omega^2 into it, at the stacking contacts' 140 Hz",
           "[rigid][softness]") {
-    // The capsule stands upright, its top cap (radius 0.3 m) a hump under the box's centre: one point,
-    // its arm along the normal. A box 0.2 m thick rocks back on a hump of radius above 0.1 m.
     for (const double g : {4.0, 9.81, 25.0})
         for (const double mass : {0.05, 1.0, 40.0})
             for (const double halfWidth : {0.2, 0.6}) {
                 World world = floorWorld(g);
-                RigidBodyDef post;
-                post.shape = BodyShape::capsule;
-                post.halfExtents = {0.5, 0.3};
-                post.angle = 0.5 * std::numbers::pi;
-                post.position = {0.0, 0.8}; // its top at y = 1.6
-                post.motion = Motion::fixed;
-                world.addBody(post);
-                RigidBodyDef d;
-                d.halfExtents = {halfWidth, 0.1};
-                d.position = {0.0, 1.7};
-                d.mass = mass;
-                d.material = {0.0, 0.5};
-                const BodyId box = world.addBody(d);
+                const BodyId box = boxOnHump(world, halfWidth, mass);
                 for (int step = 0; step < 240; ++step) world.step();
-                const double overlap = 1.7 - world.body(box).position.y;
+                const double overlap = kBoxStart - world.body(box).position.y;
                 INFO("g " << g << " mass " << mass << " half width " << halfWidth << ": overlap " << overlap
                           << ", angle " << world.body(box).angle);
                 CHECK(overlap == Approx(restingOverlap(g, 140.0)).epsilon(1e-3));
@@ -73,27 +81,15 @@ TEST_CASE("a box a joint holds rests on a fixed capsule's cap at a mechanism's 1
     for (const double g : {4.0, 9.81, 25.0})
         for (const double mass : {0.05, 1.0, 40.0}) {
             World world = floorWorld(g);
-            RigidBodyDef post;
-            post.shape = BodyShape::capsule;
-            post.halfExtents = {0.5, 0.3};
-            post.angle = 0.5 * std::numbers::pi;
-            post.position = {0.0, 0.8};
-            post.motion = Motion::fixed;
-            world.addBody(post);
-            RigidBodyDef d;
-            d.halfExtents = {0.4, 0.1};
-            d.position = {0.0, 1.7};
-            d.mass = mass;
-            d.material = {0.0, 0.5};
-            const BodyId box = world.addBody(d);
+            const BodyId box = boxOnHump(world, 0.4, mass);
             JointDef slide;
             slide.kind = JointKind::prismatic;
             slide.b.body = box;
-            slide.localAnchorA = {0.0, 1.7};
+            slide.localAnchorA = {0.0, kBoxStart};
             slide.localAxisA = {0.0, 1.0};
             world.addJoint(slide);
             for (int step = 0; step < 240; ++step) world.step();
-            const double overlap = 1.7 - world.body(box).position.y;
+            const double overlap = kBoxStart - world.body(box).position.y;
             INFO("g " << g << " mass " << mass << ": overlap " << overlap);
             CHECK(overlap == Approx(restingOverlap(g, 120.0)).epsilon(1e-3));
         }

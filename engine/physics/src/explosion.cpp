@@ -5,16 +5,21 @@
 #include "rube/physics/world.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace rube {
 
 namespace {
 
-/// The radial direction from the centre to `position` and its distance; +y at the very centre.
-Vec2 blastDirection(const Explosion& explosion, Vec2 position, double& distance) {
+/// The change of velocity the blast gives a body of `inverseMass` whose centre is at `position`:
+/// Delta v = J / m along the radial direction (at the very centre, where there is none, straight up,
+/// +y, documented in the header); none outside the blast radius.
+std::optional<Vec2> blastKick(const Explosion& explosion, Vec2 position, double inverseMass) {
     const Vec2 offset = position - explosion.centre;
-    distance = offset.length();
-    return distance > 0.0 ? offset / distance : Vec2{0.0, 1.0};
+    const double distance = offset.length();
+    if (!(distance < explosion.radius)) return std::nullopt;
+    const Vec2 direction = distance > 0.0 ? offset / distance : Vec2{0.0, 1.0};
+    return direction * (explosionImpulse(explosion, distance) * inverseMass);
 }
 
 } // namespace
@@ -45,11 +50,9 @@ std::vector<int> applyExplosion(std::span<Circle> circles, const Explosion& expl
         Circle& c = circles[i];
         // Kinematic and fixed bodies have infinite mass (inverseMass 0): no impulse moves them.
         if (c.motion != Motion::dynamic) continue;
-        // At the very centre there is no radial direction: push straight up (+y), documented in the header.
-        double distance = 0.0;
-        const Vec2 direction = blastDirection(explosion, c.position, distance);
-        if (!(distance < explosion.radius)) continue;
-        c.velocity += direction * (explosionImpulse(explosion, distance) * c.inverseMass); // Delta v = J / m
+        const std::optional<Vec2> kick = blastKick(explosion, c.position, c.inverseMass);
+        if (!kick) continue;
+        c.velocity += *kick;
         affected.push_back(static_cast<int>(i));
     }
     return affected;
@@ -68,12 +71,10 @@ ExplosionPushed applyExplosion(World& world, const Explosion& explosion) {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const RigidBody& b = bodies[i];
         if (b.motion != Motion::dynamic || b.inverseMass == 0.0) continue;
-        double distance = 0.0;
-        const Vec2 direction = blastDirection(explosion, b.position, distance);
-        if (!(distance < explosion.radius)) continue;
+        const std::optional<Vec2> kick = blastKick(explosion, b.position, b.inverseMass);
+        if (!kick) continue;
         pushed.bodies.push_back(world.bodyId(static_cast<int>(i)));
-        world.setVelocity(pushed.bodies.back(),
-                          b.velocity + direction * (explosionImpulse(explosion, distance) * b.inverseMass));
+        world.setVelocity(pushed.bodies.back(), b.velocity + *kick);
     }
     return pushed;
 }

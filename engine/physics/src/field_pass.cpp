@@ -43,6 +43,17 @@ double overlap(double start, double end, double t0, double t1) {
     return std::max(0.0, std::min(end, t1) - std::max(start, t0));
 }
 
+} // namespace
+
+Vec2 implicitFloatKick(Vec2 velocity, Vec2 up, double kick, double stiffness, double k, double dt, double ownGravity) {
+    const double rise = velocity.dot(up);
+    const double after = (rise + kick) / (1.0 + stiffness);
+    const Vec2 end = (velocity + up * (after - rise)) * std::exp(-k * dt);
+    return end - velocity + up * ownGravity;
+}
+
+namespace {
+
 // Buoyancy and water drag on one circle in one pool, as a change of velocity over dt.
 Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
     if (c.position.x < water.min.x || c.position.x > water.max.x || c.position.y - c.radius > water.max.y ||
@@ -70,11 +81,8 @@ Vec2 waterKick(const Circle& c, const Water& water, Vec2 gravity, double dt) {
         const double chord = 2.0 * std::sqrt(c.radius * c.radius - height * height);
         const double stiffness = dt * dt * g * water.density * chord * std::abs(up.y) * c.inverseMass;
         if (stiffness > 1.0) {
-            const double rise = c.velocity.dot(up);
             const double lift = g * water.density * area * c.inverseMass;
-            const double after = (rise + (lift - g) * dt) / (1.0 + stiffness);
-            const Vec2 end = (c.velocity + up * (after - rise)) * std::exp(-k * dt);
-            return end - c.velocity + up * (g * dt); // the method adds gravity's g dt itself
+            return implicitFloatKick(c.velocity, up, (lift - g) * dt, stiffness, k, dt, g * dt);
         }
     }
     // Archimedes: the displaced water's weight, rho A g, pushes against gravity; its line of action

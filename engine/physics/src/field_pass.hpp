@@ -19,6 +19,14 @@ void applyFields(std::span<Circle> circles, const Fields& fields, std::span<cons
 /// velocity onto the exact v(dt) of dv/dt = g - k v, so that position and velocity are both exact.
 void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt);
 
+/// A floating body's change of velocity over dt when its buoyancy, a spring of stiffness kappa per
+/// unit mass along `up`, is stiffer than the step can follow (`stiffness` = dt^2 kappa > 1): implicit
+/// Euler on the linearised spring, the rise after the step v1 = (v0 + kick) / (1 + dt^2 kappa) with
+/// `kick` the explicit buoyant and gravitational change along up, then the drag exp(-k dt) on that
+/// velocity; less `ownGravity` (the body's g dt), which the method adds after. Circles
+/// (field_pass.cpp) and boxes and capsules (rigid_water.cpp) float by it.
+Vec2 implicitFloatKick(Vec2 velocity, Vec2 up, double kick, double stiffness, double k, double dt, double ownGravity);
+
 /// Which part of a thruster's impulse over a step: the kick before the method moves the bodies, or the rest after.
 enum class BurnShare { beforeMove, afterMove };
 

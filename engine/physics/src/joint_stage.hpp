@@ -41,7 +41,7 @@ private:
 bool jointsTurnCircles(std::span<const Joint> joints);
 
 /// The pairs of circles a joint joins without collideConnected, as a * 2^32 + b with a < b,
-/// sorted: the circle solver's contacts and sweeps leave them out (rigid_stage.cpp does the same
+/// sorted: the circle solver's contacts and sweeps leave them out (rigid_find_contacts.cpp does the same
 /// for pairs with a rigid body).
 void connectedCirclePairs(std::span<const Joint> joints, std::vector<std::int64_t>& pairs);
 

@@ -60,7 +60,7 @@ constexpr int kRelaxIterations = 2;
 /// Of those passes, the stacking contacts (RigidContact::stacking: between shapes that no pivot or
 /// joint holds) take part in this many; the pivots, the joints and every other contact in all.
 /// One pass holds Box2D's 5050-box pyramid (largest move 0.20 m, top box 0.14 m down, with
-/// rigid_stage.cpp's 70 Hz stacking contacts) in about 15 % less time a step. A mechanism needs the
+/// rigid_softness.cpp's 70 Hz stacking contacts) in about 15 % less time a step. A mechanism needs the
 /// second: with one, a catapult's paddle (the belt-drive level) threw its ball 4.6 cm further by the
 /// top of its arc, past the flag, its pivot and the ball's contact not yet agreeing after the
 /// push-out; a hammer's head came 1.7 to 1.9 mm off its handle on striking a ball, where the weld

@@ -76,14 +76,25 @@ private:
     /// Bodies in a worker's chunk of a per-body loop (fewer than two chunks run on the calling thread):
     /// a body's update costs a few nanoseconds, a hand-over about a microsecond.
     static constexpr std::size_t kBodyChunk = 256;
+    /// Candidate pairs in a chunk of the narrowphase (a manifold costs about 0.1 us).
+    static constexpr std::size_t kPairChunk = 64;
+    /// Speculative distance every pair gets on top of its motion (Box2D's four linear slops): a plank
+    /// resting on a ball keeps its contact while either moves a little.
+    static constexpr double kSpeculativeDistance = 0.02;
+    /// The box around `p` grown by its radius and `extra` (rigid_find_contacts.cpp).
+    static BoundingBox boundsOf(const RoundedPolygon& p, double extra);
+    /// The step's contacts, listed, and the sleepers reached (rigid_find_contacts.cpp).
     void findContacts(const StepContext& ctx, double dt);
+    /// contactSoftness_ and pivotSoftness_ for substeps of h (rigid_softness.cpp).
+    void chooseSoftnesses(double h);
     /// The solver body of a contact's side: a rigid body's own slot, or the circle solver's body's
     /// place in the compact list after the rigid ones (added on first use).
     int solverBodyOf(BodySide side);
-    /// held_ from the step's pivots and joints, once the contacts have given the circles their solver bodies.
+    /// held_ from the step's pivots and joints, once the contacts have given the circles their solver
+    /// bodies (rigid_softness.cpp).
     void markHeld(const StepContext& ctx);
     /// Whether contact c (its solver bodies set) is a stacking one: RigidContact::stacking.
-    bool stacking(const RigidContact& c, std::size_t circleCount) const;
+    bool stacking(const RigidContact& c) const;
     /// Copies the listed circle-solver bodies' velocities, displacements and spins into their solver
     /// bodies (before a sweep over the contacts), and their velocities and spins back (after it), so
     /// rigid and circle contacts act on the same velocities in the same Gauss-Seidel order.

@@ -1,6 +1,7 @@
 // Boxes and capsules in water (rigid_water.hpp).
 #include "rigid_water.hpp"
 
+#include "field_pass.hpp"
 #include "rigid_solver_body.hpp"
 
 #include <algorithm>
@@ -131,12 +132,9 @@ void floatRigidBodies(std::span<RigidBody> bodies, std::span<const Water> waters
             const double k = width * water.drag * (s.area / s.whole) * b.inverseMass;
             const double slow = std::expm1(-k * dt);
             if (stiffness > 1.0) {
-                // The body's own gravity, which the method adds after this kick.
+                // Less the body's own gravity, which the method adds after this kick.
                 const double own = b.gravityScale * g;
-                const double rise = b.velocity.dot(up);
-                const double after = (rise + (impulse * b.inverseMass - own * dt)) / (1.0 + stiffness);
-                const Vec2 end = (b.velocity + up * (after - rise)) * std::exp(-k * dt);
-                dv = end - b.velocity + up * (own * dt);
+                dv = implicitFloatKick(b.velocity, up, impulse * b.inverseMass - own * dt, stiffness, k, dt, own * dt);
             } else {
                 // On the velocity it moves with, mean over the step: the kick's, less half a step of its
                 // own gravity. Floating at rest that is 0, so the drag holds nothing up and the body

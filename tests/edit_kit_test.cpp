@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <optional>
 
 #include <algorithm>
@@ -591,4 +592,54 @@ TEST_CASE("a belt is picked on its runs between its wheels, and E sets the wheel
     REQUIRE(joined.joints.size() == 1);
     CHECK(joined.joints[0].gearItemA == "left");
     CHECK(joined.joints[0].gearItemB == "spare");
+}
+
+// Ctrl+S says whether the solution still reaches the goal with each of the player's parts moved one
+// 5 cm grid step either way (solution_nudges.hpp). Here the goal must come within half a second: a
+// heavy ball dropped 1.2 m onto the flag (contact after sqrt(2 x 1.2 / 9.81) = 0.495 s) just makes
+// it, and moved 5 cm up (0.505 s) it misses; dropped from 5 cm lower, every move of it makes it.
+TEST_CASE("saving says whether the solution holds with each part moved one grid step", "[edit]") {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "rube-edit-kit-test";
+    std::filesystem::create_directories(folder);
+    for (const auto& [height, said] :
+         {std::pair{2.75, std::string(", and holds with each part moved one 5 cm grid step")},
+          std::pair{2.8, std::string(", but misses with heavy1 moved 5 cm up")}}) {
+        INFO("dropped from " << height << " m");
+        EditSession editor(levelOf(R"(name = "late"
+[world]
+time_step = 0.01
+bounds = { min = [-20, -5], max = [20, 30] }
+[view]
+min = [-8, -1]
+max = [8, 8]
+[[segment]]
+a = [-8, 0]
+b = [8, 0]
+[[item]]
+kind = "target"
+name = "flag"
+position = [0, 1]
+[[zone]]
+min = [-2, 2]
+max = [2, 4]
+[goal]
+text = "hit the flag within half a second"
+condition = "target-hit"
+target = "flag"
+time_limit = 0.5
+)"),
+                           folder / "late.toml", kFrame);
+        Hand hand{editor};
+        choose(editor, hand, partKind("heavy"));
+        hand.at({0.0, height});
+        editor.mouseButton(MouseButton::left, true);
+        editor.mouseButton(MouseButton::left, false);
+        hand.press(Key::p);
+        REQUIRE(editor.playerParts().size() == 1);
+        CHECK(editor.playerParts()[0].position.y == height);
+        hand.control(Key::s);
+        CHECK(editor.message() == "saved late.toml and late.solution.toml: the solution reaches the goal at step " +
+                                      std::string(height == 2.8 ? "50" : "49") + said);
+    }
+    std::filesystem::remove_all(folder);
 }

@@ -561,6 +561,7 @@ TEST_CASE("a level built in the editor by synthetic input is saved and checked a
     control(Key::s);
     INFO(editor.message());
     REQUIRE_THAT(editor.message(), Catch::StartsWith("saved made.toml and made.solution.toml"));
+    CHECK_THAT(editor.message(), Catch::EndsWith(", and holds with each part moved one 5 cm grid step"));
     const std::filesystem::path solution = kWork / "made.solution.toml";
     const std::string check = std::string("\"") + RUBE_BINARY + "\" check --strict \"" + file.string() + "\" \"" +
                               solution.string() + "\" > \"" + (kWork / "made.check.txt").string() + "\" 2>&1";

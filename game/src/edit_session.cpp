@@ -6,6 +6,7 @@
 #include "level_writer.hpp"
 #include "play_internal.hpp"
 #include "scene_file.hpp"
+#include "solution_nudges.hpp"
 
 #include "rube/render/palette.hpp"
 
@@ -124,6 +125,22 @@ SceneDesc EditSession::savedLevel() const {
     return level;
 }
 
+// Whether the solution holds with each part moved one grid step either way (solution_nudges.hpp):
+// a designer should know when a level can be solved only on one point of the grid.
+std::string EditSession::holdsWhenMoved(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps) const {
+    const std::vector<PlacementNudge> nudges = nudgePlacements(level, script, steps);
+    ScriptDesc named = script; // the parts as the editor names them, for the message
+    named.placements = state_.players;
+    const PlacementNudge* first = nullptr;
+    int misses = 0;
+    for (const PlacementNudge& n : nudges)
+        if (!n.refused && !n.reached && misses++ == 0) first = &n;
+    if (!first) return ", and holds with each part moved one 5 cm grid step";
+    std::string text = ", but misses with " + describeNudge(named, *first);
+    if (misses > 1) text += " (and " + std::to_string(misses - 1) + " more moves)";
+    return text;
+}
+
 bool EditSession::save() {
     const SceneDesc level = savedLevel();
     const std::string text = writeLevel(level,
@@ -164,6 +181,7 @@ bool EditSession::save() {
     std::string how = run.goalStep() ? "the solution reaches the goal at step " + std::to_string(*run.goalStep())
                                       : std::string("the solution does not reach the goal yet");
     if (const auto refusal = checkPlacements(*back.scene, script.placements)) how = refusal->brief;
+    else if (run.goalStep()) how += holdsWhenMoved(*back.scene, script, steps);
     say("saved " + file_.filename().string() + " and " + solution.filename().string() + ": " + how,
         run.goalStep() ? "goal" : "magnet");
     return true;

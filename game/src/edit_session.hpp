@@ -51,8 +51,10 @@ public:
     /// Lets real time pass in the level being tried.
     void advance(double seconds);
 
-    /// Writes the level and its solution script. False, with the reason on the bar, when the
-    /// level would not read back or a file could not be written.
+    /// Writes the level and its solution script, and says on the bar at which step the solution
+    /// reaches the goal and whether it still does with each part moved one grid step either way.
+    /// False, with the reason on the bar, when the level would not read back or a file could not be
+    /// written.
     bool save();
 
     /// The kind a click places (Tab cycles through every kind).
@@ -107,6 +109,7 @@ private:
     ItemDesc partOf(const Hit& hit) const;
     /// A player's part keeps `item`'s own keys and parameters, as a script's [[place]] holds them.
     static void markOwnKeys(Placement& p, const ItemDesc& item);
+    std::string holdsWhenMoved(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps) const;
     void tryIt();
     void changeSpare(int by);
     void fitView();

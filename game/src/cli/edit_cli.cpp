@@ -42,7 +42,8 @@ EditCommand::EditCommand(CLI::App& app) {
                      "  shown, Delete removes it. Text is typed in the bar: Enter keeps it, Esc drops it. Space\n"
                      "  tries the level as 'rube play' would, R or Esc comes back. Ctrl+Z and Ctrl+Y undo and redo;\n"
                      "  Ctrl+S saves the level and NAME.solution.toml beside it, with the goal's step as the\n"
-                     "  solution's expectation. Esc quits (without saving).\n"
+                     "  solution's expectation, and says whether the solution still reaches the goal with each\n"
+                     "  part moved one 5 cm grid step either way. Esc quits (without saving).\n"
                      "Exit status: 0 done, 1 no window could be opened, 2 bad input (level, its solution, --out).");
     command_->add_option("level", options_.level, "The level file (.toml) to change; none: a new level")
         ->type_name("LEVEL");

@@ -1,0 +1,38 @@
+#pragma once
+/// How a solution holds when its parts are placed a little off: each placement moved one step of the
+/// placement grid (5 cm) either way along x and y, one at a time, and whether the goal is still
+/// reached. A solution that works on one grid point only asks the player to find that point, and any
+/// change to the engine may tip it over: the level tests hold every shipped solution script to all
+/// four moves of each part, and the editor says on saving whether a new level's solution does.
+
+#include "script_file.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rube::game {
+
+/// The placement grid of the play window and the editor, m: a dragged part snaps to it.
+inline constexpr double kPlacementGrid = 0.05;
+
+/// One placement moved one grid step, and what came of it.
+struct PlacementNudge {
+    std::size_t placement = 0; ///< which placement of the script, in order
+    Vec2 step;                 ///< the move: (+-kPlacementGrid, 0) or (0, +-kPlacementGrid)
+    bool refused = false;      ///< the placement rules refuse it there (out of its zone, onto a part): not run
+    bool reached = false;      ///< the goal was reached within the steps given
+};
+
+/// Whether `script` (its placements, its actions at their steps) reaches `level`'s goal within
+/// `steps` steps. An action that cannot be taken counts as a miss. The placements must be allowed.
+bool reachesGoal(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps);
+
+/// Each placement of `script` moved by each of the four grid steps, one move at a time, in order
+/// (right, left, up, down), each run as reachesGoal() runs it unless refused.
+std::vector<PlacementNudge> nudgePlacements(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps);
+
+/// "heavy moved 5 cm left": a move said as the editor's bar says it.
+std::string describeNudge(const ScriptDesc& script, const PlacementNudge& nudge);
+
+} // namespace rube::game

@@ -21,7 +21,7 @@ using render::Key;
 using render::KeyAction;
 using render::MouseButton;
 
-constexpr double kGridPerMetre = 20.0; // 5 cm, as the play window's grid
+constexpr double kGridPerMetre = kPlacementGridPerMetre; // as the play window's grid (placement.hpp)
 constexpr double kTurnStep = 15.0;     // degrees
 constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
 constexpr double kSmallestView = 1.0;  // m: nor a view

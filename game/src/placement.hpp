@@ -10,6 +10,11 @@
 
 namespace rube::game {
 
+/// The placement grid of the play window and the editor: a placed or dragged part snaps to
+/// multiples of 1 / kPlacementGridPerMetre (5 cm), so scripts read as round numbers.
+inline constexpr double kPlacementGridPerMetre = 20.0;
+inline constexpr double kPlacementGrid = 1.0 / kPlacementGridPerMetre; ///< m
+
 /// One item the player places from the inventory.
 struct Placement {
     ItemKind kind = nullptr;            ///< must be in the level's inventory

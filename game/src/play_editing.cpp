@@ -18,7 +18,7 @@ using play::normalDegrees;
 using play::number;
 using play::snap;
 
-constexpr double kGridPerMetre = 20.0;   // placements snap to 5 cm, so scripts read as round numbers
+constexpr double kGridPerMetre = kPlacementGridPerMetre; // placement.hpp
 constexpr double kFinePerMetre = 1000.0; // and with the grid off (G) to 1 mm, still short in a script
 constexpr float kPickPixels = 6.0f;    // how near the cursor must be to an item to pick it
 

@@ -5,6 +5,7 @@
 /// change to the engine may tip it over: the level tests hold every shipped solution script to all
 /// four moves of each part, and the editor says on saving whether a new level's solution does.
 
+#include "placement.hpp"
 #include "script_file.hpp"
 
 #include <cstdint>
@@ -13,13 +14,10 @@
 
 namespace rube::game {
 
-/// The placement grid of the play window and the editor, m: a dragged part snaps to it.
-inline constexpr double kPlacementGrid = 0.05;
-
 /// One placement moved one grid step, and what came of it.
 struct PlacementNudge {
     std::size_t placement = 0; ///< which placement of the script, in order
-    Vec2 step;                 ///< the move: (+-kPlacementGrid, 0) or (0, +-kPlacementGrid)
+    Vec2 step;                 ///< the move: (+-kPlacementGrid, 0) or (0, +-kPlacementGrid) (placement.hpp)
     bool refused = false;      ///< the placement rules refuse it there (out of its zone, onto a part): not run
     bool reached = false;      ///< the goal was reached within the steps given
 };

@@ -19,7 +19,7 @@ constexpr double kContactHertz = 60.0;
 /// moves more than 0.20 m; at 60 Hz a box then moved 0.25 m. The other contacts keep 60 Hz: a
 /// ball's and a mechanism's, stiffer, changed how seesaws, buckets, paddles and counterweights throw
 /// and catch (three levels' wrong attempts reached the goal at 65 and 70 Hz, and at 90 the
-/// chain-door's solution no longer did).
+/// chain-door's solution of the time, since rebuilt, no longer did).
 constexpr double kStackContactHertz = 70.0;
 constexpr double kMaxHertzPerSubstepRate = 0.25;
 constexpr double kStaticHertzScale = 2.0;

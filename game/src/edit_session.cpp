@@ -132,10 +132,14 @@ std::string EditSession::holdsWhenMoved(const SceneDesc& level, const ScriptDesc
     ScriptDesc named = script; // the parts as the editor names them, for the message
     named.placements = state_.players;
     const PlacementNudge* first = nullptr;
-    int misses = 0;
-    for (const PlacementNudge& n : nudges)
+    int misses = 0, tried = 0;
+    for (const PlacementNudge& n : nudges) {
+        tried += n.refused ? 0 : 1;
         if (!n.refused && !n.reached && misses++ == 0) first = &n;
-    if (!first) return ", and holds with each part moved one 5 cm grid step";
+    }
+    const std::string step = std::to_string(static_cast<int>(kPlacementGrid * 100.0 + 0.5)) + " cm";
+    if (tried == 0) return ", and no part may move a " + step + " grid step (every move is refused)";
+    if (!first) return ", and holds with each part moved one " + step + " grid step";
     std::string text = ", but misses with " + describeNudge(named, *first);
     if (misses > 1) text += " (and " + std::to_string(misses - 1) + " more moves)";
     return text;

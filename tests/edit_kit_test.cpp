@@ -605,29 +605,10 @@ TEST_CASE("saving says whether the solution holds with each part moved one grid 
          {std::pair{2.75, std::string(", and holds with each part moved one 5 cm grid step")},
           std::pair{2.8, std::string(", but misses with heavy1 moved 5 cm up")}}) {
         INFO("dropped from " << height << " m");
-        EditSession editor(levelOf(R"(name = "late"
-[world]
-time_step = 0.01
-bounds = { min = [-20, -5], max = [20, 30] }
-[view]
-min = [-8, -1]
-max = [8, 8]
-[[segment]]
-a = [-8, 0]
-b = [8, 0]
-[[item]]
-kind = "target"
-name = "flag"
-position = [0, 1]
-[[zone]]
-min = [-2, 2]
-max = [2, 4]
-[goal]
-text = "hit the flag within half a second"
-condition = "target-hit"
-target = "flag"
-time_limit = 0.5
-)"),
+        // The bench and its stock (play_helpers.hpp), the flag under the drop, half a second to hit it.
+        EditSession editor(levelOf("name = \"late\"" + std::string(play_test::kTestBench) +
+                                   "[[item]]\nkind = \"target\"\nname = \"flag\"\nposition = [0, 1]\n" +
+                                   play_test::kTestStock + "time_limit = 0.5\n"),
                            folder / "late.toml", kFrame);
         Hand hand{editor};
         choose(editor, hand, partKind("heavy"));

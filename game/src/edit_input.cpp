@@ -21,13 +21,12 @@ using render::Key;
 using render::KeyAction;
 using render::MouseButton;
 
-constexpr double kGridPerMetre = kPlacementGridPerMetre; // as the play window's grid (placement.hpp)
 constexpr double kTurnStep = 15.0;     // degrees
 constexpr double kSmallestZone = 0.1;  // m: a click without a drag makes no zone
 constexpr double kSmallestView = 1.0;  // m: nor a view
 constexpr double kZoomStep = 1.25;     // C's wider window, per notch of the wheel
 
-Vec2 snapped(Vec2 v) { return {snap(v.x, kGridPerMetre), snap(v.y, kGridPerMetre)}; }
+Vec2 snapped(Vec2 v) { return {snap(v.x, kPlacementGridPerMetre), snap(v.y, kPlacementGridPerMetre)}; }
 
 } // namespace
 

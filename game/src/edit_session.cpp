@@ -137,7 +137,7 @@ std::string EditSession::holdsWhenMoved(const SceneDesc& level, const ScriptDesc
         tried += n.refused ? 0 : 1;
         if (!n.refused && !n.reached && misses++ == 0) first = &n;
     }
-    const std::string step = std::to_string(static_cast<int>(kPlacementGrid * 100.0 + 0.5)) + " cm";
+    const std::string step = gridStepWords();
     if (tried == 0) return ", and no part may move a " + step + " grid step (every move is refused)";
     if (!first) return ", and holds with each part moved one " + step + " grid step";
     std::string text = ", but misses with " + describeNudge(named, *first);

@@ -18,8 +18,7 @@ using play::normalDegrees;
 using play::number;
 using play::snap;
 
-constexpr double kGridPerMetre = kPlacementGridPerMetre; // placement.hpp
-constexpr double kFinePerMetre = 1000.0; // and with the grid off (G) to 1 mm, still short in a script
+constexpr double kFinePerMetre = 1000.0; // with the grid (placement.hpp) off (G): 1 mm, still short in a script
 constexpr float kPickPixels = 6.0f;    // how near the cursor must be to an item to pick it
 
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b) {
@@ -42,7 +41,7 @@ int PlaySession::remaining(ItemKind kind) const {
 
 void PlaySession::updateDrag() {
     Placement& p = drag_->placement;
-    const double perMetre = grid_ ? kGridPerMetre : kFinePerMetre;
+    const double perMetre = grid_ ? kPlacementGridPerMetre : kFinePerMetre;
     p.position = {snap(cursorWorld_.x, perMetre), snap(cursorWorld_.y, perMetre)};
     drag_->refusal.reset();
     if (bar_.contains(cursor_)) {

@@ -18,17 +18,18 @@ namespace rube::game {
 struct PlacementNudge {
     std::size_t placement = 0; ///< which placement of the script, in order
     Vec2 step;                 ///< the move: (+-kPlacementGrid, 0) or (0, +-kPlacementGrid) (placement.hpp)
-    bool refused = false;      ///< the placement rules refuse it there (out of its zone, onto a part): not run
+    bool refused = false;      ///< the player could not play it: the placement rules refuse the part there (out of
+                               ///< its zone, onto a part), or an action of the script cannot be taken
     bool reached = false;      ///< the goal was reached within the steps given
 };
 
-/// Whether `script` (its placements, its actions at their steps) reaches `level`'s goal within
-/// `steps` steps. An action that cannot be taken counts as a miss. The placements must be allowed.
-bool reachesGoal(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps);
-
 /// Each placement of `script` moved by each of the four grid steps, one move at a time, in order
-/// (right, left, up, down), each run as reachesGoal() runs it unless refused.
+/// (right, left, up, down), each run to the goal or `steps` as `rube solve` runs a candidate
+/// (runCandidate, solve_search.hpp), without stopping when the machine comes to rest.
 std::vector<PlacementNudge> nudgePlacements(const SceneDesc& level, const ScriptDesc& script, std::int64_t steps);
+
+/// The grid step as the messages say it: "5 cm".
+std::string gridStepWords();
 
 /// "heavy moved 5 cm left": a move said as the editor's bar says it.
 std::string describeNudge(const ScriptDesc& script, const PlacementNudge& nudge);

@@ -31,12 +31,14 @@ constexpr double kPivotDampingRatio = 2.0;
 } // namespace
 
 void RigidStage::chooseSoftnesses(double h) {
-    const double hertz = std::min(kContactHertz, kMaxHertzPerSubstepRate / h);
-    contactSoftness_.movable = makeSoftness(hertz, kContactDampingRatio, h);
-    contactSoftness_.fixed = makeSoftness(kStaticHertzScale * hertz, kContactDampingRatio, h);
-    const double stackHertz = std::min(kStackContactHertz, kMaxHertzPerSubstepRate / h);
-    contactSoftness_.stackMovable = makeSoftness(stackHertz, kContactDampingRatio, h);
-    contactSoftness_.stackFixed = makeSoftness(kStaticHertzScale * stackHertz, kContactDampingRatio, h);
+    // A contact's spring at `wanted` hertz (capped by the substep rate), and twice as stiff against infinite mass.
+    const auto springs = [h](double wanted, Softness& movable, Softness& fixed) {
+        const double hertz = std::min(wanted, kMaxHertzPerSubstepRate / h);
+        movable = makeSoftness(hertz, kContactDampingRatio, h);
+        fixed = makeSoftness(kStaticHertzScale * hertz, kContactDampingRatio, h);
+    };
+    springs(kContactHertz, contactSoftness_.movable, contactSoftness_.fixed);
+    springs(kStackContactHertz, contactSoftness_.stackMovable, contactSoftness_.stackFixed);
     pivotSoftness_ = makeSoftness(std::min(kPivotHertz, 2.0 * kMaxHertzPerSubstepRate / h), kPivotDampingRatio, h);
 }
 

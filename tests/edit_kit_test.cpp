@@ -262,6 +262,76 @@ TEST_CASE("the editor sets the goal's kind, its target or bucket, its time limit
     readBack(editor);
 }
 
+TEST_CASE("the editor makes a zone the goal's area, and names what must reach it", "[edit]") {
+    EditSession editor(bench(R"(
+[[item]]
+kind = "steel"
+name = "ball"
+position = [0, 4]
+[[zone]]
+min = [-2, 2]
+max = [-1, 3.5]
+[[zone]]
+min = [1, 5]
+max = [2.5, 6]
+)"),
+                       "kit.toml", kFrame);
+    Hand hand{editor};
+    const auto saved = [&] {
+        const SceneDesc back = readBack(editor);
+        REQUIRE(back.level.goal);
+        return *back.level.goal;
+    };
+    // T on the ball before any area: not a goal yet, and the message says what comes first.
+    hand.at({0.0, 4.0});
+    hand.press(Key::t);
+    CHECK_FALSE(editor.level().level.goal);
+    CHECK_THAT(editor.message(), Catch::Contains("T on a zone first"));
+    // T on the second zone: its rectangle is the area, any ball, and it is no longer a zone.
+    hand.at({1.7, 5.5});
+    hand.press(Key::t);
+    Goal goal = saved();
+    CHECK(goal.kind == GoalKind::reachArea);
+    CHECK(goal.item.empty());
+    CHECK(goal.area.min == Vec2{1.0, 5.0});
+    CHECK(goal.area.max == Vec2{2.5, 6.0});
+    CHECK(goal.text == "get a ball into the area");
+    CHECK(editor.level().level.zones.size() == 1);
+    CHECK_THAT(editor.message(), Catch::StartsWith("goal reach-area: get a ball into the area within 10 s"));
+    // T on the ball: it must; T again: any ball again.
+    hand.at({0.0, 4.0});
+    hand.press(Key::t);
+    goal = saved();
+    CHECK(goal.item == "ball");
+    CHECK(goal.text == "get the ball into the area");
+    CHECK(goal.area.max == Vec2{2.5, 6.0});
+    hand.press(Key::t);
+    CHECK(saved().item.empty());
+    hand.press(Key::t);
+    // The other zone, T'd, moves the area and keeps the ball.
+    hand.at({-1.5, 2.5});
+    hand.press(Key::t);
+    goal = saved();
+    CHECK(goal.item == "ball");
+    CHECK(goal.area.min == Vec2{-2.0, 2.0});
+    CHECK(editor.level().level.zones.empty());
+    // Ctrl+Z gives the zone back and the area before; a target's T makes it a target goal again.
+    hand.control(Key::z);
+    CHECK(editor.level().level.zones.size() == 1);
+    CHECK(saved().area.min == Vec2{1.0, 5.0});
+    hand.at({3.0, 1.0});
+    hand.press(Key::t);
+    CHECK(saved().kind == GoalKind::targetHit);
+    // Deleting the named ball takes the goal with it; deleting an unnamed part does not.
+    hand.at({-1.5, 2.5});
+    hand.press(Key::t);
+    hand.at({0.0, 4.0});
+    hand.press(Key::t);
+    CHECK(saved().item == "ball");
+    hand.press(Key::deleteKey);
+    CHECK_FALSE(editor.level().level.goal);
+}
+
 TEST_CASE("the editor's view: C shows more of the world and a drag sets the level's [view] anywhere", "[edit]") {
     EditSession editor(bench(), "kit.toml", kFrame);
     Hand hand{editor};

@@ -382,6 +382,74 @@ TEST_CASE("the bucket goal needs a ball resting inside it for half a second", "[
     CHECK_FALSE(settle(4.0));
 }
 
+// The reach-area goal: reached the first step the ball's centre is in the area. A ball dropped from
+// rest at height h is at h - g t^2 / 2 after t (the exact method's free flight is that parabola), so
+// it comes into an area whose top is at y_a in step ceil(sqrt(2 (h - y_a) / g) / dt).
+TEST_CASE("reach-area: a dropped ball comes into the area in the step free fall gives", "[level]") {
+    const auto levelText = [](double h, double top, double left, const std::string& item) {
+        std::string text = "name = \"r\"\n[world]\ntime_step = 0.01\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n"
+                           "[[item]]\nkind = \"steel\"\nname = \"drop\"\nposition = [0, " +
+                           std::to_string(h) +
+                           "]\n[[item]]\nkind = \"bouncy\"\nname = \"still\"\nposition = [3, 0.25]\n"
+                           "[goal]\ntext = \"x\"\ncondition = \"reach-area\"\n";
+        if (!item.empty()) text += "item = \"" + item + "\"\n";
+        return text + "area = { min = [" + std::to_string(left) + ", 0.05], max = [" + std::to_string(left + 2.0) +
+               ", " + std::to_string(top) + "] }\ntime_limit = 3\n";
+    };
+    const auto goalOf = [](const SceneDesc& level) {
+        LevelRun run(level, {});
+        for (int i = 0; i < 300 && !run.goalStep(); ++i) run.step();
+        return std::pair{run.goalStep(), run.events().empty() ? GameEvent{} : run.events().back()};
+    };
+    int cases = 0;
+    for (const double h : {2.0, 3.5, 5.0, 7.25}) {
+        for (const double top : {0.4, 0.9, 1.7}) {
+            INFO("dropped from " << h << " m into an area up to " << top << " m");
+            const double g = 9.81;
+            const auto expected = static_cast<std::int64_t>(std::ceil(std::sqrt(2.0 * (h - top) / g) / 0.01));
+            // The named ball, and any ball: the same step, by the same ball, at the area's top.
+            for (const std::string item : {"drop", ""}) {
+                const auto [step, event] = goalOf(parseLevel(levelText(h, top, -1.0, item)));
+                REQUIRE(step);
+                CHECK(*step == expected);
+                CHECK(event.kind == EventKind::goal);
+                CHECK(event.by == "drop");
+                CHECK(event.position.y <= top);
+                CHECK(event.position.y > top - g * 0.01 * (0.01 * static_cast<double>(expected)));
+                ++cases;
+            }
+            // An area beside the fall is never reached, and neither is one for the ball that stays put.
+            CHECK_FALSE(goalOf(parseLevel(levelText(h, top, 1.5, "drop"))).first);
+            CHECK_FALSE(goalOf(parseLevel(levelText(h, top, -1.0, "still"))).first);
+        }
+    }
+    CHECK(cases == 24);
+}
+
+TEST_CASE("reach-area: its keys are read with their places, and other conditions' keys are refused", "[level]") {
+    const std::string head = "name = \"t\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n[[item]]\nkind = \"steel\"\nname = "
+                             "\"ball\"\nposition = [0, 1]\n[[item]]\nkind = \"target\"\nname = \"flag\"\nposition = "
+                             "[2, 1]\n[goal]\ntext = \"x\"\n";
+    CHECK(firstError(head + "condition = \"reach-area\"\nitem = \"ball\"\n") ==
+          "t.toml:13:1: missing required key 'area' in [goal]");
+    CHECK(firstError(head + "condition = \"reach-area\"\narea = { min = [1, 0], max = [-1, 3] }\n") ==
+          "t.toml:16:30: area max must be greater than min in both x and y, got min [1, 0] and max [-1, 3]");
+    CHECK(firstError(head + "condition = \"reach-area\"\narea = { min = [-1, 0], max = [1, 3], mn = 2 }\n") ==
+          "t.toml:16:39: unknown key 'mn' in goal.area (known keys: min, max)");
+    CHECK(firstError(head + "condition = \"reach-area\"\nitem = \"flag\"\narea = { min = [-1, 0], max = [1, 3] }\n")
+              .starts_with("t.toml:16:8: item 'flag' is a target, not a heavy, bouncy, steel, balloon, rocket"));
+    CHECK(
+        firstError(head + "condition = \"reach-area\"\ntarget = \"flag\"\narea = { min = [-1, 0], max = [1, 3] }\n") ==
+        "t.toml:16:10: condition 'reach-area' takes no 'target' (it takes item and area)");
+    // A key of another condition was read past without a word before reach-area came.
+    CHECK(firstError(head + "condition = \"target-hit\"\ntarget = \"flag\"\nbucket = \"pail\"\n") ==
+          "t.toml:17:10: condition 'target-hit' takes no 'bucket' (it takes target)");
+    CHECK(firstError(head + "condition = \"all-targets\"\nitem = \"ball\"\n") ==
+          "t.toml:16:8: condition 'all-targets' takes no 'item' (it takes no item)");
+    CHECK(firstError(head + "condition = \"reach-area\"\nitem = \"ball\"\narea = { min = [-1, 0], max = [1, 3] }\n") ==
+          "no error");
+}
+
 TEST_CASE("trampoline: the heavy ball dropped where the bouncy one goes does not clear the wall", "[level]") {
     const SceneDesc level = loadLevel("trampoline");
     const std::vector<Placement> heavy{{partKind("heavy"), {-3.8, 5.8}, 0.0, "", {}}};

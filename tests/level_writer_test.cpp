@@ -84,6 +84,8 @@ void requireSameLevel(const SceneDesc& a, const SceneDesc& b) {
         CHECK(a.level.goal->text == b.level.goal->text);
         CHECK(a.level.goal->kind == b.level.goal->kind);
         CHECK(a.level.goal->item == b.level.goal->item);
+        CHECK(a.level.goal->area.min == b.level.goal->area.min);
+        CHECK(a.level.goal->area.max == b.level.goal->area.max);
         CHECK(a.level.goal->timeLimit == b.level.goal->timeLimit);
     }
     REQUIRE(a.level.hints.size() == b.level.hints.size());
@@ -151,5 +153,16 @@ TEST_CASE("a level changed in memory is written as changed", "[level][writer]") 
         level.level.goal->timeLimit = 5.0 + k;
         const SceneDesc back = reread(writeLevel(level), "changed");
         requireSameLevel(level, back);
+        // The goal made a reach-area one, for any ball and for a named one (the editor keeps it so).
+        level.level.goal->kind = GoalKind::reachArea;
+        level.level.goal->item.clear();
+        level.level.goal->area = {{-1.0 + 0.3 * k, 0.5}, {2.0, 3.25 + 0.1 * k}};
+        if (k >= 0) {
+            ItemDesc ball = partKind("steel")->make({0.5 * k, 1.0});
+            ball.name = "ball";
+            level.level.items.push_back(ball);
+            level.level.goal->item = "ball";
+        }
+        requireSameLevel(level, reread(writeLevel(level), "changed"));
     }
 }

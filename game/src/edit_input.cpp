@@ -183,7 +183,9 @@ void EditSession::removeAtCursor() {
     } else if (hit.what == Hit::What::zone) {
         level.zones.erase(level.zones.begin() + static_cast<std::ptrdiff_t>(hit.index));
     } else {
-        if (level.goal && level.goal->item == level.items[hit.index].name) level.goal.reset();
+        // The goal's own item taken away takes the goal (not an unnamed item's: "" is "any" to a goal).
+        if (level.goal && !level.goal->item.empty() && level.goal->item == level.items[hit.index].name)
+            level.goal.reset();
         level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
         // Every target with none left is no goal (the reader refuses it).
         if (level.goal && level.goal->kind == GoalKind::allTargets &&
@@ -218,7 +220,7 @@ void EditSession::markAtCursor() {
     p.name = item.name;
     markOwnKeys(p, item); // the solution's [[place]] gives them, as a script may
     state_.players.push_back(p);
-    if (level.goal && level.goal->item == item.name) level.goal.reset();
+    if (level.goal && !level.goal->item.empty() && level.goal->item == item.name) level.goal.reset();
     level.items.erase(level.items.begin() + static_cast<std::ptrdiff_t>(hit.index));
     say(std::string(p.kind->name()) + " is the player's: it goes into the inventory and the solution");
 }
@@ -262,6 +264,8 @@ std::string goalText(const Goal& goal) {
     case GoalKind::targetHit: return "hit the " + goal.item;
     case GoalKind::ballInBucket: return "get a ball into the " + goal.item;
     case GoalKind::allTargets: return "hit every target";
+    case GoalKind::reachArea:
+        return goal.item.empty() ? "get a ball into the area" : "get the " + goal.item + " into the area";
     }
     return "";
 }
@@ -269,28 +273,50 @@ std::string goalText(const Goal& goal) {
 } // namespace
 
 // T on a target: hit it; T again on the goal's own target: hit every target; again: that one.
-// T on a bucket: a ball in it.
+// T on a bucket: a ball in it. T on a placement zone: its rectangle becomes the goal's area (reach-area,
+// any ball, or the ball the goal named). With a reach-area goal, T on a ball, crate, domino or rocket:
+// that one must reach the area; T on it again: any ball.
 void EditSession::goalAtCursor() {
     const Hit hit = hitAtCursor();
-    if (hit.what != Hit::What::item) return say("T: point at a target or a bucket", "magnet");
-    const ItemDesc& item = state_.level.level.items[hit.index];
     const std::optional<Goal>& now = state_.level.level.goal;
+    const bool reaching = now && now->kind == GoalKind::reachArea;
+    if (hit.what != Hit::What::item && hit.what != Hit::What::zone)
+        return say(reaching ? "T: point at a target, a bucket, a zone or what must reach the area"
+                            : "T: point at a target, a bucket or a zone",
+                   "magnet");
     Goal goal;
     goal.timeLimit = now ? now->timeLimit : std::optional<double>(10.0);
-    goal.item = item.name;
-    if (item.kind->plays(PartRole::goalTarget)) {
-        goal.kind = GoalKind::targetHit;
-        if (now && now->kind == GoalKind::targetHit && now->item == item.name) {
-            goal.kind = GoalKind::allTargets;
-            goal.item.clear();
-        }
-    } else if (item.kind->plays(PartRole::goalBucket)) {
-        goal.kind = GoalKind::ballInBucket;
+    if (hit.what == Hit::What::zone) {
+        goal.kind = GoalKind::reachArea;
+        goal.item = reaching ? now->item : std::string();
+        goal.area = state_.level.level.zones[hit.index].box;
     } else {
-        return say("T: a " + std::string(item.kind->name()) + " cannot be a goal", "magnet");
+        const ItemDesc& item = state_.level.level.items[hit.index];
+        goal.item = item.name;
+        if (item.kind->plays(PartRole::goalTarget)) {
+            goal.kind = GoalKind::targetHit;
+            if (now && now->kind == GoalKind::targetHit && now->item == item.name) {
+                goal.kind = GoalKind::allTargets;
+                goal.item.clear();
+            }
+        } else if (item.kind->plays(PartRole::goalBucket)) {
+            goal.kind = GoalKind::ballInBucket;
+        } else if (reaching && item.kind->plays(PartRole::goalMover)) {
+            goal.kind = GoalKind::reachArea;
+            goal.area = now->area;
+            if (now->item == item.name) goal.item.clear();
+        } else {
+            return say(
+                "T: a " + std::string(item.kind->name()) + " cannot be a goal" +
+                    (item.kind->plays(PartRole::goalMover) ? " (T on a zone first: the area it must reach)" : ""),
+                "magnet");
+        }
     }
     goal.text = now && now->text != goalText(*now) ? now->text : goalText(goal);
     edit();
+    // The zone is the goal's area now, not a place for the player's parts.
+    if (hit.what == Hit::What::zone)
+        state_.level.level.zones.erase(state_.level.level.zones.begin() + static_cast<std::ptrdiff_t>(hit.index));
     state_.level.level.goal = goal;
     sayGoal();
 }

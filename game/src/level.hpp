@@ -22,16 +22,17 @@ struct Zone {
 };
 
 /// What wins the level.
-enum class GoalKind : std::uint8_t { targetHit, ballInBucket, allTargets };
+enum class GoalKind : std::uint8_t { targetHit, ballInBucket, allTargets, reachArea };
 
-/// The goal's condition as files spell it: "target-hit", "ball-in-bucket", "all-targets".
+/// The goal's condition as files spell it: "target-hit", "ball-in-bucket", "all-targets", "reach-area".
 std::string_view conditionName(GoalKind kind);
 
 /// The goal: its text for the HUD, the condition and an optional time limit.
 struct Goal {
     std::string text; ///< what the player is told
     GoalKind kind = GoalKind::targetHit;
-    std::string item;                ///< the target (targetHit) or bucket (ballInBucket)
+    std::string item; ///< the target (targetHit), bucket (ballInBucket) or ball (reachArea; "": any ball)
+    Aabb area;        ///< reachArea: where the ball's centre must come
     std::optional<double> timeLimit; ///< seconds; the goal counts only when reached by then
 };
 

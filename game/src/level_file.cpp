@@ -12,8 +12,11 @@ namespace {
 
 constexpr std::string_view kZoneKeys[] = {"min", "max"};
 constexpr std::string_view kHintKeys[] = {"text"};
-constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "time_limit"};
-constexpr std::string_view kConditionNames[] = {"target-hit", "ball-in-bucket", "all-targets"};
+constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "item", "area", "time_limit"};
+constexpr std::string_view kConditionNames[] = {"target-hit", "ball-in-bucket", "all-targets", "reach-area"};
+/// The keys each condition takes besides text, condition and time_limit (in GoalKind order).
+constexpr std::string_view kConditionKeys[] = {"target", "bucket", "", "item and area"};
+constexpr std::string_view kAreaKeys[] = {"min", "max"};
 
 // The keys a kind's [[item]] may hold, as its descriptor lists them.
 std::vector<std::string_view> keysOf(ItemKind kind) {
@@ -121,6 +124,25 @@ void checkReference(Diagnostics& diag, SourcePlace place, std::string_view key, 
         diag.error(place, std::move(message));
 }
 
+// A key that another condition takes is an error, not ignored: `bucket` under target-hit says so.
+void refuseOtherConditionsKeys(TableReader& goal, GoalKind kind) {
+    const auto uses = [kind](std::string_view key) {
+        switch (kind) {
+        case GoalKind::targetHit: return key == "target";
+        case GoalKind::ballInBucket: return key == "bucket";
+        case GoalKind::allTargets: return false;
+        case GoalKind::reachArea: return key == "item" || key == "area";
+        }
+        return false;
+    };
+    const std::string_view takes = kConditionKeys[static_cast<std::size_t>(kind)];
+    for (std::string_view key : {"target", "bucket", "item", "area"})
+        if (goal.find(key) && !uses(key))
+            goal.error(goal.valuePlace(key),
+                       "condition '" + std::string(conditionName(kind)) + "' takes no '" + std::string(key) + "' (" +
+                           (takes.empty() ? std::string("it takes no item") : "it takes " + std::string(takes)) + ")");
+}
+
 void readGoal(TableReader& root, SceneReading& reading) {
     const toml::table* table = root.table("goal", "[goal] with text and condition");
     if (!table) return;
@@ -131,6 +153,7 @@ void readGoal(TableReader& root, SceneReading& reading) {
     if (condition) result.kind = static_cast<GoalKind>(*condition);
     if (const auto t = goal.number("time_limit", NumberRange::positive())) result.timeLimit = *t;
     const LevelDesc& level = reading.scene.level;
+    if (condition) refuseOtherConditionsKeys(goal, result.kind);
     if (condition && result.kind == GoalKind::targetHit) {
         if (const auto name = goal.string("target", Need::required)) {
             result.item = *name;
@@ -140,6 +163,16 @@ void readGoal(TableReader& root, SceneReading& reading) {
         if (const auto name = goal.string("bucket", Need::required)) {
             result.item = *name;
             checkReference(reading.diag, goal.valuePlace("bucket"), "bucket", *name, PartRole::goalBucket, level);
+        }
+    } else if (condition && result.kind == GoalKind::reachArea) {
+        // The item whose centre must come into the area; without one, any ball (a placed one, a shot).
+        if (const auto name = goal.string("item")) {
+            result.item = *name;
+            checkReference(reading.diag, goal.valuePlace("item"), "item", *name, PartRole::goalMover, level);
+        }
+        if (const toml::table* area = goal.table("area", "{ min = [x, y], max = [x, y] }", Need::required)) {
+            TableReader box(*area, "in goal.area", kAreaKeys, reading.diag);
+            if (const auto read = readBox(box, "area")) result.area = *read;
         }
     } else if (condition) {
         bool any = false;

@@ -341,9 +341,37 @@ void LevelRun::checkGoal() {
         }
         break;
     }
+    case GoalKind::reachArea: {
+        const auto inArea = [&](Vec2 p) {
+            return p.x >= goal->area.min.x && p.x <= goal->area.max.x && p.y >= goal->area.min.y &&
+                   p.y <= goal->area.max.y;
+        };
+        if (!goal->item.empty()) {
+            // A popped balloon or a spent bomb has no body left to arrive.
+            const int item = find(goal->item);
+            const ItemState& state = states_[static_cast<std::size_t>(item)];
+            const bool hasBody = !state.circle.isNull() || !state.body.isNull();
+            reached = hasBody && inArea(itemPosition(item));
+            if (reached) {
+                where = itemPosition(item);
+                by = goal->item;
+            }
+            break;
+        }
+        // Any ball: the first dynamic circle, in the World's order, whose centre is in the area.
+        const auto circles = world_.circles();
+        for (std::size_t i = 0; i < circles.size() && !reached; ++i) {
+            const Circle& c = circles[i];
+            if (c.motion != Motion::dynamic || !inArea(c.position)) continue;
+            reached = true;
+            where = c.position;
+            by = nameOf(world_.circleId(static_cast<int>(i)));
+        }
+        break;
+    }
     }
     if (!reached) return;
-    if (goal->kind != GoalKind::ballInBucket) {
+    if (goal->kind == GoalKind::targetHit || goal->kind == GoalKind::allTargets) {
         // The hit that completed it: the latest on the goal's target, or on any goal target.
         for (auto e = events_.rbegin(); e != events_.rend(); ++e) {
             if (e->kind != EventKind::hit) continue;

@@ -47,6 +47,20 @@ void drawZones(const LevelDesc& level, render::DrawList& list) {
     }
 }
 
+namespace {
+
+// A reach-area goal's area: always drawn, behind the bodies, in the goal's colour with a heavier
+// edge than a placement zone's, so the player sees where the ball must come.
+void drawGoalArea(const LevelDesc& level, render::DrawList& list) {
+    if (!level.goal || level.goal->kind != GoalKind::reachArea) return;
+    const Palette& palette = Palette::greybox();
+    const Aabb& area = level.goal->area;
+    list.box(pt((area.min + area.max) * 0.5), pt((area.max - area.min) * 0.5), 0.0f,
+             {palette["goal"].withAlpha(0x48), palette["goal"], 3.0f});
+}
+
+} // namespace
+
 std::vector<std::string> wrapText(const std::string& text, int width, int scale, int maxLines) {
     std::vector<std::string> lines;
     std::string line;
@@ -178,6 +192,7 @@ void LevelView::draw(const LevelRun& run, std::int64_t step, render::DrawList& l
     list.clear();
     list.background = Palette::greybox()["background"];
     if (options_.zones) drawZones(run.scene().level, list);
+    drawGoalArea(run.scene().level, list);
     drawBodies(run, list);
     drawItems(run, list);
     // Water in front of balls and items, as in the scene view: a floating ball shows how deep it sits.

@@ -63,6 +63,14 @@ void goal(std::string& out, const Goal& goal) {
     line(out, "condition", quoted(std::string(conditionName(goal.kind))));
     if (goal.kind == GoalKind::targetHit) line(out, "target", quoted(goal.item));
     if (goal.kind == GoalKind::ballInBucket) line(out, "bucket", quoted(goal.item));
+    if (goal.kind == GoalKind::reachArea) {
+        if (!goal.item.empty()) line(out, "item", quoted(goal.item));
+        std::string area = "{ min = ";
+        area += pair(goal.area.min);
+        area += ", max = ";
+        area += pair(goal.area.max);
+        line(out, "area", area += " }");
+    }
     if (goal.timeLimit) line(out, "time_limit", scriptNumber(*goal.timeLimit));
 }
 

@@ -141,6 +141,7 @@ enum class PartRole : std::uint8_t {
     triggered,  ///< what a switch's `triggers` may name (besides a rope)
     goalTarget, ///< a goal's `target`, counted by all-targets
     goalBucket, ///< a goal's `bucket`
+    goalMover,  ///< a reach-area goal's `item`: a part that moves (a ball, a crate, a domino, a rocket)
     wheel       ///< what a belt or a gear may name: its first joint is the axle it turns on
 };
 

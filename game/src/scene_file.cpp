@@ -43,6 +43,8 @@ constexpr KeyHome kTopHomes[] = {{"gravity", "[world]"},
 // A run longer than this is a mistake in duration or time_step, not a plan.
 constexpr double kMaxDefaultSteps = 1e9;
 
+} // namespace
+
 // A box written as min and max corners, max above and to the right of min; `what` names it in errors.
 std::optional<Aabb> readBox(TableReader& box, std::string_view what) {
     const auto min = box.vec2("min", Need::required);
@@ -55,6 +57,8 @@ std::optional<Aabb> readBox(TableReader& box, std::string_view what) {
     }
     return Aabb{*min, *max};
 }
+
+namespace {
 
 void readBounds(TableReader& world, SceneDesc& scene) {
     const toml::table* table = world.table("bounds", "{ min = [x, y], max = [x, y] }");

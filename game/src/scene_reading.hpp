@@ -45,6 +45,10 @@ bool methodMovesRotating(const SceneDesc& scene, Method method, std::string& why
 /// Reads [[item]], [inventory], [[zone]] and [goal] into scene.level, then checks every reference by name.
 void readLevel(TableReader& root, SceneReading& reading);
 
+/// A box written as `min` and `max` corners, max above and to the right of min, or nothing after
+/// reporting why; `what` names it in the errors ("bounds", "view", "area").
+std::optional<Aabb> readBox(TableReader& box, std::string_view what);
+
 /// Reads an optional `name` key and registers it, reporting an empty or repeated name; "" when absent.
 std::string readBodyName(TableReader& table, SceneReading& reading, Need need = Need::optional);
 

@@ -101,6 +101,7 @@ class BallKind : public PartKind {
 public:
     bool isBall() const override { return true; }
     bool placeable() const override { return true; }
+    bool plays(PartRole role) const override { return role == PartRole::goalMover; }
     ItemDesc make(Vec2 position) const override { return made(position, BallParams{radius(), {}}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;
@@ -210,6 +211,7 @@ public:
     bool placeable() const override { return true; }
     bool turns() const override { return true; }
     double turnPeriod() const override { return 180.0; } // a box is the same after half a turn
+    bool plays(PartRole role) const override { return role == PartRole::goalMover; }
     ItemDesc make(Vec2 position) const override { return made(position, defaults()); }
     ItemBodies bodies(const ItemDesc& item) const override {
         const LooseBoxParams& p = item.params.as<LooseBoxParams>();

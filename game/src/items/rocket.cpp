@@ -55,7 +55,9 @@ public:
     std::span<const PartKey> keys() const override { return kKeys; }
     bool placeable() const override { return true; }
     bool turns() const override { return true; }
-    bool plays(PartRole role) const override { return role == PartRole::toggle || role == PartRole::triggered; }
+    bool plays(PartRole role) const override {
+        return role == PartRole::toggle || role == PartRole::triggered || role == PartRole::goalMover;
+    }
     ItemDesc make(Vec2 position) const override { return made(position, RocketParams{}); }
     void read(TableReader& table, ItemDesc& item, SceneReading& reading) const override {
         (void)reading;

@@ -55,6 +55,28 @@ void lintZones(const SceneDesc& level, Diagnostics& warn, SourcePlace inventoryP
         warn.error(l.zones.front().place, "the level has placement zones but no [inventory] to place from");
 }
 
+// Where the file wrote the goal's `area`, else its [goal], else the top of the file.
+SourcePlace goalAreaPlace(const std::optional<toml::table>& document) {
+    if (document)
+        if (const toml::table* goal = document->get_as<toml::table>("goal")) {
+            if (const toml::node* area = goal->get("area")) return placeOf(area->source());
+            return placeOf(goal->source());
+        }
+    return {1, 1};
+}
+
+// A reach-area goal the player cannot see, or that a ball would have to leave the world to reach.
+void lintGoalArea(const SceneDesc& level, Diagnostics& warn, SourcePlace place) {
+    const std::optional<Goal>& goal = level.level.goal;
+    if (!goal || goal->kind != GoalKind::reachArea) return;
+    if (level.view && !inside(*level.view, goal->area))
+        warn.error(place, "the goal's area " + boxWords(goal->area) + " is not wholly inside the [view] " +
+                              boxWords(*level.view) + ": the player cannot see all of it");
+    if (!inside(level.world.bounds, goal->area))
+        warn.error(place, "the goal's area " + boxWords(goal->area) + " is not wholly inside the world's bounds " +
+                              boxWords(level.world.bounds) + ": a ball leaves the world before it gets there");
+}
+
 } // namespace
 
 std::optional<std::int64_t> headlessGoalStep(const SceneDesc& level, const ScriptDesc& script) {
@@ -78,6 +100,7 @@ std::vector<SceneError> lintLevel(const SceneDesc& level, const std::string& fil
     const std::optional<toml::table> document = parseToml(text, file, ignored);
     if (!level.level.goal) warn.error({1, 1}, "the level has no [goal]: nothing can win it");
     lintZones(level, warn, tablePlace(document, "inventory"));
+    lintGoalArea(level, warn, goalAreaPlace(document));
     for (const auto& [i, j] : overlappingItems(level)) {
         const ItemDesc& a = level.level.items[i];
         const ItemDesc& b = level.level.items[j];

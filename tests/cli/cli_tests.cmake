@@ -323,7 +323,7 @@ rube_cli_test("check the level index" "check|${PROJECT_SOURCE_DIR}/levels/index.
               "-DSTDOUT_MATCH=index.toml: ok \\(a level index of [0-9]+ levels\\)\n$")
 set(lint ${RUBE_CLI_DIR}/lint)
 # Each lint fixture lists its warnings in '# expect:' lines; warnings leave the status 0, --strict makes it 2.
-foreach(stem warnings self-solving missed)
+foreach(stem warnings self-solving missed goal-area)
   rube_cli_test("check lints ${stem}" "check|${lint}/${stem}.toml" 0 -DSTDERR_FIXTURE_ALL=${lint}/${stem}.toml
                 "-DSTDOUT_MATCH=${stem}.toml: ok, [0-9]+ warnings?\n$")
   rube_cli_test("check --strict refuses ${stem}" "check|--strict|${lint}/${stem}.toml" 2 "-DSTDOUT_MATCH=^$")

@@ -18,8 +18,9 @@ constexpr const char* kCheckFooter =
     "  LEVEL, else NAME.toml beside it): every placement allowed, every item an action or\n"
     "  expectation names exists and is of the right kind, actions in step order. An old key gets\n"
     "  its new name: 'frame' is now 'step', 'before_frame' is now 'before_step'.\n"
-    "Levels are also linted, as 'file:line:col: warning: message': no [goal]; a zone outside the\n"
-    "  [view] or the world's bounds; an inventory without a zone or zones without an inventory;\n"
+    "Levels are also linted, as 'file:line:col: warning: message': no [goal]; a zone, or a\n"
+    "  reach-area goal's area, outside the [view] or the world's bounds; an inventory without a\n"
+    "  zone or zones without an inventory;\n"
     "  fixed items overlapping; and, run headless, a goal reached with nothing placed, or a\n"
     "  NAME.solution.toml beside the level that does not reach the goal.\n"
     "Exit status: 0 when every file is ok (warnings allowed unless --strict), 2 otherwise.";

@@ -184,6 +184,14 @@ TEST_CASE("each level's goal event is where the goal happened, by what did it", 
         if (level.level.goal->kind == GoalKind::ballInBucket) {
             const ItemDesc& bucket = run.items()[static_cast<std::size_t>(run.find(level.level.goal->item))];
             CHECK(bucket.kind->holds(bucket, goal.position));
+        } else if (level.level.goal->kind == GoalKind::reachArea) {
+            // Where the item's centre came into the area: inside it, and the goal's item did it.
+            const Aabb& area = level.level.goal->area;
+            CHECK(goal.position.x >= area.min.x);
+            CHECK(goal.position.x <= area.max.x);
+            CHECK(goal.position.y >= area.min.y);
+            CHECK(goal.position.y <= area.max.y);
+            if (!level.level.goal->item.empty()) CHECK(goal.by == level.level.goal->item);
         } else {
             // The latest hit on a goal target, at the goal's step, is the one the goal repeats.
             const auto hit = std::find_if(run.events().rbegin(), run.events().rend(), [&](const GameEvent& e) {

@@ -52,7 +52,9 @@ constexpr Expected kExpected[] = {
     {"belt", "", 240, 0xb0caca793f162d80ull},
     {"pulley", "", 240, 0x275d0fbf35d4cc51ull},  // these three rest boxes on two points: solved together since
     {"springs", "", 240, 0x188258e361dbea8full}, // 2026-11-28 (rigid_normal_pair.hpp)
-    {"piston", "", 240, 0xbba013fd801a45f2ull},
+    // A motor stalled at its limit lets its island sleep (2026-11-28): both pistons here stop at their
+    // limits and sleep there, and the balls against them settle 1e-5 m differently.
+    {"piston", "", 240, 0x6df8495db2abd7d7ull},
     {"weld", "", 240, 0x73b6fcd86315164bull},
     {"chain", "", 240, 0x303997cb4a75b424ull},
 };

@@ -234,6 +234,51 @@ TEST_CASE("rigid sleep: a running motor keeps its island awake, switched off it 
     CHECK_FALSE(world.body(wheel).sleep.asleep);
 }
 
+// A boxing glove's piston (a prismatic joint with a motor and limits) punched out to the end of its
+// stroke keeps driving into the limit, which pushes back: it moves nothing, so its island may sleep as
+// a braked one does. Over slide directions (level, slanting, straight up against gravity), strokes
+// and speeds: the glove comes to rest at the stroke's end and falls asleep there; a new speed wakes
+// it, it slides back to the other limit and sleeps again.
+TEST_CASE("rigid sleep: a motor stalled at its limit lets its island sleep, a new speed wakes it",
+          "[sleep][rigid][joints]") {
+    const Method method = GENERATE(Method::solver, Method::automatic);
+    const double degrees = GENERATE(0.0, 30.0, 90.0);
+    const double stroke = GENERATE(0.3, 0.8);
+    const double speed = GENERATE(1.0, 4.0);
+    INFO("method " << methodName(method) << ", axis at " << degrees << " degrees, stroke " << stroke << " m, speed "
+                   << speed << " m/s");
+    World world(sleepDef(method));
+    const Vec2 axis{std::cos(degrees * kDegree), std::sin(degrees * kDegree)};
+    const Vec2 home{0.0, 2.0};
+    const BodyId glove = world.addBody(box(home, {0.15, 0.15}));
+    JointDef piston;
+    piston.kind = JointKind::prismatic;
+    piston.b = JointEnd{{}, glove};
+    piston.localAnchorA = home;
+    piston.localAxisA = axis;
+    piston.limits = {true, 0.0, stroke};
+    piston.motor = {speed, 400.0};
+    const JointId j = world.addJoint(piston);
+    // Out to the stroke's end in stroke / speed, then asleep within the time to sleep and a second.
+    const int most = static_cast<int>((stroke / speed + world.def().timeToSleep + 1.0) / world.def().timeStep);
+    REQUIRE(stepsToSleep(world, {glove}, most) > 0);
+    CHECK((world.body(glove).position - home).dot(axis) == Approx(stroke).margin(0.01));
+    CHECK(world.body(glove).velocity.length() < world.def().sleepSpeed);
+    // Pulled back: awake at once, home again, and asleep there too.
+    world.setJointMotor(j, {-speed, 400.0});
+    CHECK_FALSE(world.body(glove).sleep.asleep);
+    REQUIRE(stepsToSleep(world, {glove}, most) > 0);
+    CHECK((world.body(glove).position - home).dot(axis) == Approx(0.0).margin(0.01));
+    // Without limits the same motor drives on and never sleeps (the rule above, for a slide).
+    JointDef free = piston;
+    free.limits = {};
+    World open(sleepDef(method));
+    const BodyId runner = open.addBody(box(home, {0.15, 0.15}));
+    free.b = JointEnd{{}, runner};
+    open.addJoint(free);
+    CHECK(stepsToSleep(open, {runner}, most) < 0);
+}
+
 TEST_CASE("rigid sleep: sleeping on or off, a settled scene rests in the same place", "[sleep][rigid]") {
     const Method method = GENERATE(Method::solver, Method::automatic);
     INFO("method " << methodName(method));

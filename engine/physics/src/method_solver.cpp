@@ -119,7 +119,8 @@ private:
     std::span<const BoundingBox> bulletPaths(double dt);
     RigidSleepInput rigidSleep(const StepContext& ctx) const {
         if (!hasRigid_) return {{}, {}, {}, {}, {}, ctx.ropes};
-        return {ctx.bodies, rigid_.contacts(), ctx.joints, ctx.pivots, rigid_.reached(), ctx.ropes};
+        return {ctx.bodies, rigid_.contacts(),     ctx.joints, ctx.pivots, rigid_.reached(),
+                ctx.ropes,  rigid_.stalledMotors()};
     }
 
     int circleCount_ = 0;

@@ -27,8 +27,11 @@ bool movingKinematic(const RigidBody& b) {
 
 bool dynamicBody(const RigidBody& b) { return b.motion == Motion::dynamic && b.inverseMass > 0.0; }
 
-/// A running motor drives its island: it never sleeps (a motor at speed 0 only brakes, and may).
-bool drives(const Joint& j) { return j.def.motor.on() && j.def.motor.speed != 0.0; }
+/// A running motor drives its island: it never sleeps. A motor at speed 0 only brakes, and may; so
+/// may one stalled at a limit (a glove's piston punched out to the end of its stroke), which only
+/// presses into it: it moves nothing until something wakes the island, or a new speed (World::
+/// setJointMotor wakes its ends).
+bool drives(const Joint& j, bool stalled) { return j.def.motor.on() && j.def.motor.speed != 0.0 && !stalled; }
 
 /// Calls f(node) for each end of joint j that is a circle or rigid body (nodes: circles, then bodies);
 /// a gear's ends are those of the two joints it couples (World::joints() slots, as `joints`).
@@ -275,8 +278,9 @@ void SleepIslands::countSlowBodies(const RigidSleepInput& rigid, int circleCount
     jointHeld_.assign(state_.size(), 0);
     for (const Pivot& p : rigid.pivots)
         if (p.body >= 0) jointHeld_[static_cast<std::size_t>(circleCount + p.body)] = 1;
-    for (const Joint& j : rigid.joints) {
-        const bool motor = drives(j);
+    for (std::size_t k = 0; k < rigid.joints.size(); ++k) {
+        const Joint& j = rigid.joints[k];
+        const bool motor = drives(j, k < rigid.stalledMotors.size() && rigid.stalledMotors[k] != 0);
         forEachEnd(rigid.joints, j, circleCount, [&](int node) {
             jointHeld_[static_cast<std::size_t>(node)] = 1;
             std::uint8_t& s = state_[static_cast<std::size_t>(node)];

@@ -55,6 +55,7 @@ struct RigidSleepInput {
     std::span<const Pivot> pivots;
     std::span<const int> reached; ///< sleepers an awake or moving body's contacts reach: circle c, or -1 - body
     std::span<const Rope> ropes;  ///< the world's ropes (solver_sleep_ropes.cpp), in any world
+    std::span<const std::uint8_t> stalledMotors = {}; ///< per joint: 1 where its motor is stalled at a limit
 };
 
 /// The circles a step looks at to wake and put islands to sleep.

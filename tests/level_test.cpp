@@ -812,10 +812,32 @@ TEST_CASE("a domino that tips onto a target marks it hit, one that stands does n
     std::printf("domino onto a target: hit at step %lld, point [%.3f, %.3f]\n",
                 static_cast<long long>(falls.events().front().step), falls.events().front().position.x,
                 falls.events().front().position.y);
+    CHECK(falls.events().front().by == "domino"); // the scene's [[box]], by its name
     LevelRun stands(level(-5.0), {});
     for (int i = 0; i < 180; ++i) stands.step();
     CHECK_FALSE(stands.goalStep());
     CHECK(stands.events().empty());
+    // The same fall by a domino part: the hit and the goal name it, as a ball's are named, and so
+    // does its trace name (LevelRun::bodyName); a [[box]] is not an item.
+    for (const double tilt : {-15.0, -25.0, -35.0}) {
+        INFO("tilted " << tilt << " degrees");
+        LevelRun part(parseLevel("name = \"d\"\n[world]\nmethod = \"auto\"\n[[segment]]\na = [-5, 0]\nb = [5, 0]\n"
+                                 "friction = 0.6\n[[item]]\nkind = \"domino\"\nname = \"tile\"\nposition = [0, 0.25]\n"
+                                 "angle = " +
+                                 std::to_string(tilt) +
+                                 "\n[[item]]\nkind = \"target\"\nname = \"T\"\nposition = [0.55, 0.3]\n"
+                                 "[goal]\ntext = \"x\"\ncondition = \"target-hit\"\ntarget = \"T\"\n"),
+                      {});
+        for (int i = 0; i < 180 && !part.goalStep(); ++i) part.step();
+        REQUIRE(part.goalStep());
+        CHECK(part.events().front().by == "tile");
+        CHECK(part.events().back().by == "tile"); // the goal event
+        REQUIRE(part.world().bodies().size() == 1);
+        CHECK(part.itemOfBody(0) == part.find("tile"));
+        CHECK(part.bodyName(0) == "tile");
+    }
+    CHECK(falls.itemOfBody(0) == -1);
+    CHECK(falls.bodyName(0) == "domino");
 }
 
 TEST_CASE("a level's clicks name the parts a click may act on, and scripts that click others are refused", "[level]") {

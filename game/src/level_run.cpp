@@ -248,8 +248,16 @@ void LevelRun::cutRope(std::string_view name) {
     if (const int rope = scene_.findRope(name); rope >= 0) world_.cutRope(ropes_[static_cast<std::size_t>(rope)]);
 }
 
+int LevelRun::itemOfBody(int slot) const {
+    if (slot < 0 || static_cast<std::size_t>(slot) >= world_.bodies().size()) return -1;
+    // An item's bodies hold its index + 1 (addItem); the scene's own boxes and capsules hold 0.
+    const std::uint64_t value = world_.userValue(world_.bodyId(slot));
+    return value > 0 && (value & kMarks) == 0 && value <= items_.size() ? static_cast<int>(value - 1) : -1;
+}
+
 std::string LevelRun::bodyName(int slot) const {
-    // The scene's boxes and capsules are the World's bodies, in file order.
+    if (const int item = itemOfBody(slot); item >= 0) return items_[static_cast<std::size_t>(item)].name;
+    // The scene's boxes and capsules are the World's first bodies, in file order.
     return slot >= 0 && static_cast<std::size_t>(slot) < scene_.bodyNames.size()
                ? scene_.bodyNames[static_cast<std::size_t>(slot)]
                : std::string();

@@ -85,7 +85,11 @@ public:
     /// Who World circle `circle` is, as an expectation's `by` names it: its item's name, the name of
     /// the cannon that shot it, or the scene's [[circle]] name; "" when it has none.
     std::string nameOf(CircleId circle) const;
-    /// The name of the World's rigid body in `slot` (the scene's [[box]] or [[capsule]]), "" when unnamed.
+    /// The item World rigid body `slot` belongs to (a crate, a domino, a seesaw's plank), or -1 (the
+    /// scene's own [[box]]es and [[capsule]]s).
+    int itemOfBody(int slot) const;
+    /// The name of the World's rigid body in `slot`: its item's name, or the scene's [[box]] or
+    /// [[capsule]] name; "" when unnamed.
     std::string bodyName(int slot) const;
     /// The scene the level was built from.
     const SceneDesc& scene() const { return scene_; }

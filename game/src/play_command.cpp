@@ -213,9 +213,13 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
         }
         return run.nameOf(c);
     };
-    const auto traceState = [&] {
-        trace.writeLevelState(run.world(), traceName, [&](int slot) { return run.bodyName(slot); });
+    const auto bodyTraceName = [&](int slot) {
+        if (const int item = run.itemOfBody(slot);
+            item >= 0 && run.items()[static_cast<std::size_t>(item)].name.empty())
+            return std::string(itemKindName(run.items()[static_cast<std::size_t>(item)].kind));
+        return run.bodyName(slot);
     };
+    const auto traceState = [&] { trace.writeLevelState(run.world(), traceName, bodyTraceName); };
     std::unique_ptr<FrameRecorder> recorder;
     std::unique_ptr<LevelView> view;
     render::DrawList list;

@@ -4,19 +4,20 @@
 #include "scene_reading.hpp"
 #include "toml_writer.hpp"
 
+#include <algorithm>
+#include <array>
 #include <numbers>
 
 namespace rube::game {
 
 namespace {
 
-constexpr std::string_view kZoneKeys[] = {"min", "max"};
+constexpr std::string_view kBoxKeys[] = {"min", "max"}; // a zone's, and a reach-area goal's area
 constexpr std::string_view kHintKeys[] = {"text"};
 constexpr std::string_view kGoalKeys[] = {"text", "condition", "target", "bucket", "item", "area", "time_limit"};
 constexpr std::string_view kConditionNames[] = {"target-hit", "ball-in-bucket", "all-targets", "reach-area"};
 /// The keys each condition takes besides text, condition and time_limit (in GoalKind order).
-constexpr std::string_view kConditionKeys[] = {"target", "bucket", "", "item and area"};
-constexpr std::string_view kAreaKeys[] = {"min", "max"};
+constexpr std::array<std::array<std::string_view, 2>, 4> kConditionKeys{{{"target"}, {"bucket"}, {}, {"item", "area"}}};
 
 // The keys a kind's [[item]] may hold, as its descriptor lists them.
 std::vector<std::string_view> keysOf(ItemKind kind) {
@@ -89,17 +90,8 @@ void readInventory(TableReader& root, SceneReading& reading) {
 
 void readZones(TableReader& root, SceneReading& reading) {
     for (const toml::table* table : root.arrayOfTables("zone")) {
-        TableReader zone(*table, "in [[zone]]", kZoneKeys, reading.diag);
-        const auto min = zone.vec2("min", Need::required);
-        const auto max = zone.vec2("max", Need::required);
-        if (!min || !max) continue;
-        if (!(min->x < max->x && min->y < max->y)) {
-            zone.error(zone.valuePlace("max"), "zone max must be greater than min in both x and y, got min " +
-                                                   formatPair(min->x, min->y) + " and max " +
-                                                   formatPair(max->x, max->y));
-            continue;
-        }
-        reading.scene.level.zones.push_back({Aabb{*min, *max}, zone.tablePlace()});
+        TableReader zone(*table, "in [[zone]]", kBoxKeys, reading.diag);
+        if (const auto box = readBox(zone, "zone")) reading.scene.level.zones.push_back({*box, zone.tablePlace()});
     }
 }
 
@@ -126,21 +118,16 @@ void checkReference(Diagnostics& diag, SourcePlace place, std::string_view key, 
 
 // A key that another condition takes is an error, not ignored: `bucket` under target-hit says so.
 void refuseOtherConditionsKeys(TableReader& goal, GoalKind kind) {
-    const auto uses = [kind](std::string_view key) {
-        switch (kind) {
-        case GoalKind::targetHit: return key == "target";
-        case GoalKind::ballInBucket: return key == "bucket";
-        case GoalKind::allTargets: return false;
-        case GoalKind::reachArea: return key == "item" || key == "area";
-        }
-        return false;
-    };
-    const std::string_view takes = kConditionKeys[static_cast<std::size_t>(kind)];
-    for (std::string_view key : {"target", "bucket", "item", "area"})
-        if (goal.find(key) && !uses(key))
-            goal.error(goal.valuePlace(key),
-                       "condition '" + std::string(conditionName(kind)) + "' takes no '" + std::string(key) + "' (" +
-                           (takes.empty() ? std::string("it takes no item") : "it takes " + std::string(takes)) + ")");
+    const auto& own = kConditionKeys[static_cast<std::size_t>(kind)];
+    std::string takes; // "target", "item and area"
+    for (std::string_view key : own)
+        if (!key.empty()) takes += (takes.empty() ? "" : " and ") + std::string(key);
+    for (const auto& keys : kConditionKeys)
+        for (std::string_view key : keys)
+            if (!key.empty() && goal.find(key) && std::find(own.begin(), own.end(), key) == own.end())
+                goal.error(goal.valuePlace(key), "condition '" + std::string(conditionName(kind)) + "' takes no '" +
+                                                     std::string(key) + "' (" +
+                                                     (takes.empty() ? "it takes no item" : "it takes " + takes) + ")");
 }
 
 void readGoal(TableReader& root, SceneReading& reading) {
@@ -171,7 +158,7 @@ void readGoal(TableReader& root, SceneReading& reading) {
             checkReference(reading.diag, goal.valuePlace("item"), "item", *name, PartRole::goalMover, level);
         }
         if (const toml::table* area = goal.table("area", "{ min = [x, y], max = [x, y] }", Need::required)) {
-            TableReader box(*area, "in goal.area", kAreaKeys, reading.diag);
+            TableReader box(*area, "in goal.area", kBoxKeys, reading.diag);
             if (const auto read = readBox(box, "area")) result.area = *read;
         }
     } else if (condition) {

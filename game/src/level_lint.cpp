@@ -55,14 +55,12 @@ void lintZones(const SceneDesc& level, Diagnostics& warn, SourcePlace inventoryP
         warn.error(l.zones.front().place, "the level has placement zones but no [inventory] to place from");
 }
 
-// Where the file wrote the goal's `area`, else its [goal], else the top of the file.
+// Where the file wrote the goal's `area`, else its [goal] (tablePlace).
 SourcePlace goalAreaPlace(const std::optional<toml::table>& document) {
     if (document)
-        if (const toml::table* goal = document->get_as<toml::table>("goal")) {
+        if (const toml::table* goal = document->get_as<toml::table>("goal"))
             if (const toml::node* area = goal->get("area")) return placeOf(area->source());
-            return placeOf(goal->source());
-        }
-    return {1, 1};
+    return tablePlace(document, "goal");
 }
 
 // A reach-area goal the player cannot see, or that a ball would have to leave the world to reach.

@@ -350,18 +350,14 @@ void LevelRun::checkGoal() {
         break;
     }
     case GoalKind::reachArea: {
-        const auto inArea = [&](Vec2 p) {
-            return p.x >= goal->area.min.x && p.x <= goal->area.max.x && p.y >= goal->area.min.y &&
-                   p.y <= goal->area.max.y;
-        };
         if (!goal->item.empty()) {
             // A popped balloon or a spent bomb has no body left to arrive.
             const int item = find(goal->item);
             const ItemState& state = states_[static_cast<std::size_t>(item)];
-            const bool hasBody = !state.circle.isNull() || !state.body.isNull();
-            reached = hasBody && inArea(itemPosition(item));
+            const Vec2 at = itemPosition(item);
+            reached = (!state.circle.isNull() || !state.body.isNull()) && goal->area.contains(at);
             if (reached) {
-                where = itemPosition(item);
+                where = at;
                 by = goal->item;
             }
             break;
@@ -370,7 +366,7 @@ void LevelRun::checkGoal() {
         const auto circles = world_.circles();
         for (std::size_t i = 0; i < circles.size() && !reached; ++i) {
             const Circle& c = circles[i];
-            if (c.motion != Motion::dynamic || !inArea(c.position)) continue;
+            if (c.motion != Motion::dynamic || !goal->area.contains(c.position)) continue;
             reached = true;
             where = c.position;
             by = nameOf(world_.circleId(static_cast<int>(i)));

@@ -205,18 +205,17 @@ ExitCode playLevel(const RunOptions& options, const SceneDesc& level, std::ostre
         return ExitCode::badInput;
     }
     // The item column: the item's name, else its kind; a shot is "<cannon> shot"; a [[circle]] its name.
+    const auto itemLabel = [&](int item) {
+        const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
+        return desc.name.empty() ? std::string(itemKindName(desc.kind)) : desc.name;
+    };
     const auto traceName = [&](CircleId c) {
         if (run.isProjectile(c)) return run.nameOf(c) + " shot";
-        if (const int item = run.itemOf(c); item >= 0) {
-            const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
-            return desc.name.empty() ? std::string(itemKindName(desc.kind)) : desc.name;
-        }
+        if (const int item = run.itemOf(c); item >= 0) return itemLabel(item);
         return run.nameOf(c);
     };
     const auto bodyTraceName = [&](int slot) {
-        if (const int item = run.itemOfBody(slot);
-            item >= 0 && run.items()[static_cast<std::size_t>(item)].name.empty())
-            return std::string(itemKindName(run.items()[static_cast<std::size_t>(item)].kind));
+        if (const int item = run.itemOfBody(slot); item >= 0) return itemLabel(item);
         return run.bodyName(slot);
     };
     const auto traceState = [&] { trace.writeLevelState(run.world(), traceName, bodyTraceName); };

@@ -90,14 +90,16 @@ void JointStage::prepare(const StepContext& ctx, double h, const Softness& softn
 
 void JointStage::bind(const RigidSolverView& view) { view_ = JointView{view, circleTurn_}; }
 
-bool JointStage::motorStalled(std::size_t k) const {
-    if (k >= constraints_.size()) return false;
-    const JointConstraint& c = constraints_[k];
-    const JointDef& d = c.joint->def;
-    if (!d.motor.on() || !d.limits.on) return false;
-    // The limit rows push against the coordinate's motion past them: the upper one back against a
-    // motor turning it up (speed > 0), the lower one against a motor turning it down.
-    return (d.motor.speed > 0.0 && c.upperImpulse > 0.0) || (d.motor.speed < 0.0 && c.lowerImpulse > 0.0);
+void JointStage::motorsStalled(std::vector<std::uint8_t>& out) const {
+    out.resize(constraints_.size());
+    for (std::size_t k = 0; k < constraints_.size(); ++k) {
+        const JointConstraint& c = constraints_[k];
+        const JointDef& d = c.joint->def;
+        // The limit rows push against the coordinate's motion past them: the upper one back against a
+        // motor turning it up (speed > 0), the lower one against a motor turning it down.
+        out[k] = d.motor.on() && d.limits.on &&
+                 ((d.motor.speed > 0.0 && c.upperImpulse > 0.0) || (d.motor.speed < 0.0 && c.lowerImpulse > 0.0));
+    }
 }
 
 void JointStage::warmStart() {

@@ -27,9 +27,9 @@ public:
     void integrateCircleTurns(double h);
     /// True when a joint holds rigid body `index` (it is not free between its contacts).
     bool holdsBody(int index) const;
-    /// After the step: whether the motor of joint k (ctx.joints order) is stalled at a limit, driving
+    /// After the step, per joint (ctx.joints order): 1 where its motor is stalled at a limit, driving
     /// into it while the limit pushed back this step: it moves nothing, only presses, as a brake holds.
-    bool motorStalled(std::size_t k) const;
+    void motorsStalled(std::vector<std::uint8_t>& out) const;
 
 private:
     std::vector<JointConstraint> constraints_;

@@ -93,7 +93,6 @@ void RigidStage::prepare(const StepContext& ctx, double dt) {
     preparePivots(ctx.pivots, ctx.bodies, pivots_);
     // Joints are as stiff as pivots (the same softness).
     joints_.prepare(ctx, h, pivotSoftness_);
-    jointCount_ = ctx.joints.size();
     markHeld(ctx);
 }
 
@@ -254,8 +253,7 @@ void RigidStage::applyRestitution(double threshold) {
     });
     storeOthers();
     capBounceEnergy();
-    stalledMotors_.resize(jointCount_);
-    for (std::size_t k = 0; k < jointCount_; ++k) stalledMotors_[k] = joints_.motorStalled(k) ? 1 : 0;
+    joints_.motorsStalled(stalledMotors_);
 }
 
 void RigidStage::finish(StepContext& ctx) const {

@@ -69,7 +69,7 @@ public:
     /// step: circle c as c, rigid body i as -1 - i (SleepIslands::wakeReached wakes their islands).
     std::span<const int> reached() const { return reached_; }
     /// Per joint (the step's ctx.joints), after the step: 1 where its motor is stalled at a limit
-    /// (JointStage::motorStalled), which lets its island sleep as a braked one may.
+    /// (JointStage::motorsStalled), which lets its island sleep as a braked one may.
     std::span<const std::uint8_t> stalledMotors() const { return stalledMotors_; }
 
     /// An axis-aligned bounding box, for the pair test.
@@ -188,7 +188,6 @@ private:
     RigidBlocks blocks_; // the contacts as the substeps read them, packed at bind(), unpacked before restitution
     std::vector<int> reached_;
     std::vector<std::uint8_t> stalledMotors_;
-    std::size_t jointCount_ = 0; // the step's joints
     RigidContactCache cache_; // the last step's impulses, to warm start the points found again
     std::vector<PivotConstraint> pivots_;
     JointStage joints_;

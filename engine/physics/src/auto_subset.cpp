@@ -72,6 +72,7 @@ StepContext StepSubset::context(const StepContext& world, const WorldDef& def) {
     sub.sleep = world.sleep;
     sub.workers = world.workers;
     sub.joints = joints_;
+    sub.magnets = world.magnets;
     return sub;
 }
 

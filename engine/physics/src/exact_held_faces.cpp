@@ -17,15 +17,20 @@ constexpr double kParallelSine = 1e-9;
 void HeldFaces::reset(std::size_t circleCount, Vec2 gravity) {
     faces_.clear();
     accelerations_.assign(circleCount, gravity);
-    gravity_ = gravity;
+    free_.assign(circleCount, gravity);
 }
 
-// A face that carries no weight (gravity pulls the circle off it) holds nothing. Lines of a world
-// with blocks are left to the end-of-step settle (the blocks' search assumes plain gravity): the
-// caller holds only in worlds without them.
+void HeldFaces::setFreeAcceleration(int circle, Vec2 free) {
+    free_[static_cast<std::size_t>(circle)] = free;
+    accelerations_[static_cast<std::size_t>(circle)] = free;
+}
+
+// A face that carries no weight (gravity, or gravity and a magnet, pull the circle off it) holds nothing. Lines of a
+// world with blocks are left to the end-of-step settle (the blocks' search assumes plain gravity): the caller holds
+// only in worlds without them.
 void HeldFaces::hold(StepContext& ctx, int circle, int segment, Vec2 normal) {
     const Segment& s = ctx.segments[segment];
-    if (s.motion() != Motion::fixed || !(ctx.def.gravity.dot(normal) < 0.0)) return;
+    if (s.motion() != Motion::fixed || !(free_[static_cast<std::size_t>(circle)].dot(normal) < 0.0)) return;
     Circle& c = ctx.circles[circle];
     for (const HeldFace& held : faces_) {
         // Held by two faces at an angle, it is wedged: the only velocity both leave is zero.
@@ -35,10 +40,11 @@ void HeldFaces::hold(StepContext& ctx, int circle, int segment, Vec2 normal) {
     accelerations_[static_cast<std::size_t>(circle)] = heldAcceleration(circle);
 }
 
-// Gravity less what the faces holding the circle cancel: the nearest acceleration to g that
-// pushes into none of them (a ~ g - (g . n) n on one face; zero in a V).
+// The free acceleration g (gravity, and a magnet's pull) less what the faces holding the circle
+// cancel: the nearest acceleration to g that pushes into none of them (a ~ g - (g . n) n on one
+// face; zero in a V).
 Vec2 HeldFaces::heldAcceleration(int circle) const {
-    const Vec2 g = gravity_;
+    const Vec2 g = free_[static_cast<std::size_t>(circle)];
     const auto pushesIntoNone = [&](Vec2 a) {
         for (const HeldFace& held : faces_)
             if (held.circle == circle && a.dot(held.normal) < 0.0) return false;
@@ -87,7 +93,7 @@ HeldFace HeldFaces::release(int f) {
 
 void HeldFaces::letGo(int circle) {
     std::erase_if(faces_, [&](const HeldFace& held) { return held.circle == circle; });
-    accelerations_[static_cast<std::size_t>(circle)] = gravity_;
+    accelerations_[static_cast<std::size_t>(circle)] = free_[static_cast<std::size_t>(circle)];
 }
 
 } // namespace rube

@@ -1,8 +1,8 @@
 #pragma once
 // Internal to the exact method (method_exact.cpp): circles held on static line faces for the rest of
 // a step. A resting contact on a face holds the ball on it: it slides along the face under the part of
-// gravity the face does not cancel, so its next impact (the other side of a V) is found exactly, and a
-// ball held by two faces that are not parallel stands still. Not part of the public API.
+// gravity (and of a magnet's pull) the face does not cancel, so its next impact (the other side of a V) is found
+// exactly, and a ball held by two faces that are not parallel stands still. Not part of the public API.
 
 #include "step_method.hpp"
 
@@ -24,12 +24,15 @@ class HeldFaces {
 public:
     /// Starts a step: no face holds anything, every circle falls with `gravity`.
     void reset(std::size_t circleCount, Vec2 gravity);
+    /// Circle `circle` falls with `free` instead when no face holds it (gravity and a magnet's pull).
+    void setFreeAcceleration(int circle, Vec2 free);
     bool empty() const { return faces_.empty(); }
     int size() const { return static_cast<int>(faces_.size()); }
-    /// Gravity, or what the faces holding circle `circle` leave of it.
+    /// Its free acceleration, or what the faces holding circle `circle` leave of it.
     Vec2 acceleration(int circle) const { return accelerations_[static_cast<std::size_t>(circle)]; }
     /// A resting contact of `circle` on `segment`'s face (normal towards the circle): held there when the
-    /// line is fixed and carries weight; wedged (velocity zero) against a face it holds at an angle.
+    /// line is fixed and its free acceleration presses the circle on it; wedged (velocity zero) against a face it holds
+    /// at an angle.
     void hold(StepContext& ctx, int circle, int segment, Vec2 normal);
     /// The earliest time within the horizon at which face `f`'s circle passes an end of the face.
     std::optional<double> leavesFace(const StepContext& ctx, int f, double horizon) const;
@@ -43,7 +46,7 @@ private:
 
     std::vector<HeldFace> faces_;
     std::vector<Vec2> accelerations_; ///< per circle
-    Vec2 gravity_;
+    std::vector<Vec2> free_;          ///< per circle, with no face holding it
 };
 
 } // namespace rube

@@ -28,10 +28,18 @@ constexpr double kSupportSine = 1e-6;
 // for the acceleration a spring gives a circle of the pair, |omega^2 (p - x_eq) + 2 zeta omega v|,
 // which may be far above g: a spring-held ball resting on the floor (its pair left out of the
 // search) sinks |a| dt^2 / 2 within the step and must be settled at rest, not bounced off with the
-// speed the spring gave it. Impacts within the step keep the world's: they are real approaches.
-double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, double dt, int i, int j) {
-    if (springs.empty()) return ctx.restingSpeed;
+// speed the spring gave it. A magnet's pull likewise, with gravity: |g + a| (a ball the magnet holds
+// from below sinks into it by |g + a| dt^2 / 2 in the step). Impacts within the step keep the
+// world's: they are real approaches.
+double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, std::span<const Vec2> pulls, double dt,
+                      int i, int j) {
     double speed = ctx.restingSpeed;
+    if (!pulls.empty())
+        for (const int k : {i, j}) {
+            const Vec2 kick = k >= 0 ? pulls[static_cast<std::size_t>(k)] : Vec2{};
+            if (kick != Vec2{}) speed = std::max(speed, 2.0 * (ctx.def.gravity * dt + kick).length() + 1e-3);
+        }
+    if (springs.empty()) return speed;
     for (const int k : {i, j}) {
         const SpringPath* path = k >= 0 ? springs.pathOf(k) : nullptr;
         if (!path) continue;
@@ -46,14 +54,14 @@ double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, doubl
 } // namespace
 
 void ExactSettle::settle(StepContext& ctx, double dt, const RestingPairs& resting, const ExactSprings& springs,
-                         std::vector<BlockPair>& blockResting) {
+                         std::vector<BlockPair>& blockResting, std::span<const Vec2> pulls) {
     collectContacts(ctx, ctx.restingSpeed * dt, resting);
     if (!ctx.bodies.empty()) settleBlockContacts(ctx, ctx.restingSpeed * dt, blockResting);
     if (contacts_.empty()) return;
     orderFromTheGroundUp(ctx);
     for (int pass = 0; pass < kSettlePasses; ++pass) {
         double deepest = 0.0;
-        for (const Contact& contact : contacts_) deepest = std::max(deepest, settle(ctx, contact, springs, dt));
+        for (const Contact& contact : contacts_) deepest = std::max(deepest, settle(ctx, contact, springs, pulls, dt));
         if (deepest <= kSettledDepth) break;
     }
 }
@@ -125,7 +133,8 @@ void ExactSettle::orderFromTheGroundUp(const StepContext& ctx) {
 }
 
 // Pushes one contact apart and stops a resting approach (C = 0); returns the overlap removed.
-double ExactSettle::settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs, double dt) const {
+double ExactSettle::settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs,
+                           std::span<const Vec2> pulls, double dt) const {
     Circle& c = ctx.circles[contact.circle];
     std::optional<Overlap> overlap;
     Vec2 otherPosition, otherVelocity;
@@ -148,7 +157,7 @@ double ExactSettle::settle(StepContext& ctx, const Contact& contact, const Exact
     }
     if (!overlap) return 0.0;
     const bool isResting = approachSpeed(c.velocity, otherVelocity, overlap->normal) <
-                           restingSpeedOf(ctx, springs, dt, contact.circle, dynamicOther ? contact.other : -1);
+                           restingSpeedOf(ctx, springs, pulls, dt, contact.circle, dynamicOther ? contact.other : -1);
     if (dynamicOther && isResting) {
         // The body holding the other up, nearer the ground, holds still as if of infinite mass.
         const int levelC = levels_[contact.circle], levelO = levels_[contact.other];

@@ -10,6 +10,7 @@
 #include "exact_springs.hpp"
 #include "step_method.hpp"
 
+#include <span>
 #include <vector>
 
 namespace rube {
@@ -19,9 +20,10 @@ class ExactSettle {
 public:
     /// Settles every touching pair of `ctx` after a step of `dt`: circles (a circle resting on a face
     /// keeps the side `resting` says it came from; a spring-held circle's threshold grows with the
-    /// acceleration its spring gives it) and lecture 3's blocks (`blockResting`).
+    /// acceleration its spring gives it, a magnet-pulled one's with gravity and the pull's kick a dt in
+    /// `pulls`, per circle or empty) and lecture 3's blocks (`blockResting`).
     void settle(StepContext& ctx, double dt, const RestingPairs& resting, const ExactSprings& springs,
-                std::vector<BlockPair>& blockResting);
+                std::vector<BlockPair>& blockResting, std::span<const Vec2> pulls = {});
 
 private:
     // A pair touching (or nearly) at the end of a step; `side` is a segment face's side.
@@ -34,7 +36,8 @@ private:
     };
     void collectContacts(const StepContext& ctx, double slop, const RestingPairs& resting);
     void orderFromTheGroundUp(const StepContext& ctx);
-    double settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs, double dt) const;
+    double settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs, std::span<const Vec2> pulls,
+                  double dt) const;
 
     std::vector<Contact> contacts_; ///< the settle's pairs
     std::vector<int> levels_;       ///< per circle: contacts between it and the ground

@@ -150,6 +150,7 @@ private:
         StepContext trial{trialDef,         ctx.circles, ctx.segments, ctx.bodies, ctx.time,
                           ctx.restingSpeed, ctx.impacts, ctx.stats,    ctx.pivots, ctx.ropes};
         trial.sleep = ctx.sleep;
+        trial.magnets = ctx.magnets;
         exact_->step(trial, dt);
         if (ctx.stats.capsHit == statsBefore.capsHit) {
             ctx.stats.exactBodySteps += dynamic;
@@ -333,6 +334,7 @@ private:
                                   ctx.restingSpeed, ctx.impacts, ctx.stats,    ctx.pivots, ctx.ropes};
                 trial.sleep = ctx.sleep;
                 trial.joints = ctx.joints;
+                trial.magnets = ctx.magnets;
                 exact_->step(trial, dt);
             } else {
                 StepContext trial = exactSubset_.context(ctx, trialDef);

@@ -51,6 +51,9 @@ public:
         // Throws, before anything moved, when a joint has no closed form (exact_springs.hpp).
         springs_.build(ctx);
         if (!springs_.empty()) keepStart(ctx);
+        // Lecture 3's blocks search assuming plain gravity: beside them a magnet's pull stays a kick.
+        pulls_.clear();
+        if (!ctx.magnets.empty() && ctx.bodies.empty()) pullByMagnets(ctx, dt);
 
         // "While CurrentTime < TargetTime: compute the earliest collision, move all bodies to it,
         // resolve it" (lecture 3). Work is bounded by def.maxEventsPerStep.
@@ -90,7 +93,8 @@ public:
                 separateBlockOverlaps(ctx, centres_, 0.0, ctx.time + dt);
             }
         }
-        settle_.settle(ctx, dt, resting_, springs_, blockResting_);
+        settle_.settle(ctx, dt, resting_, springs_, blockResting_, pulls_);
+        if (!pulls_.empty()) finishPulls(ctx, dt);
         ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
     }
 
@@ -158,6 +162,43 @@ private:
             }
         }
         return best;
+    }
+
+    // A magnet's pull, kicked in whole at the step's start (field_pass.cpp), brought a ball it holds
+    // on the magnet back at the kick's speed every step: a real impact, a bounce, and a ball standing
+    // still that reported the same speed away from the magnet every step. Here the kick is taken back
+    // and the circle moves under the pull as under gravity, a constant acceleration a0 = F(x0) / m
+    // over the step: it meets what holds it at the speed the gap allows and rests there (C = 0), and
+    // a face it rests on holds it with what it leaves of g + a0 (exact_held_faces.hpp). After the
+    // step the velocity gets (a1 - a0) dt / 2 with a1 the pull where it ended (finishPulls): velocity
+    // Verlet, x1 = x0 + v0 dt + a0 dt^2 / 2 and v1 = v0 + (a0 + a1) dt / 2, second order where the
+    // kick is first (a steel ball swinging under a magnet keeps its swing). A spring's circle keeps
+    // its closed form and the kick.
+    Vec2 pullOf(const StepContext& ctx, const Circle& c, double dt) const {
+        Vec2 kick; // summed as field_pass.cpp sums it, so the kick taken back is the one given
+        for (const Magnet& magnet : ctx.magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
+        return kick;
+    }
+    void pullByMagnets(StepContext& ctx, double dt) {
+        pulls_.assign(ctx.circles.size(), Vec2{});
+        for (int i = 0; i < circleCount_; ++i) {
+            Circle& c = ctx.circles[static_cast<std::size_t>(i)];
+            if (!c.magnetic || c.motion != Motion::dynamic || c.inverseMass == 0.0 ||
+                (!springs_.empty() && springs_.pathOf(i)))
+                continue;
+            const Vec2 kick = pullOf(ctx, c, dt);
+            if (kick == Vec2{}) continue;
+            c.velocity -= kick;
+            pulls_[static_cast<std::size_t>(i)] = kick;
+            held_.setFreeAcceleration(i, ctx.def.gravity + kick / dt);
+        }
+    }
+    void finishPulls(StepContext& ctx, double dt) const {
+        for (std::size_t i = 0; i < pulls_.size(); ++i) {
+            if (pulls_[i] == Vec2{}) continue;
+            Circle& c = ctx.circles[i];
+            c.velocity += (pullOf(ctx, c, dt) - pulls_[i]) * 0.5;
+        }
     }
 
     // Circle i's motion from now: a spring's closed form, its parabola, or a straight line.
@@ -312,6 +353,7 @@ private:
     std::vector<Vec2> centres_;           ///< the clean-up's side reference after a cap hit
     std::vector<BlockPair> blockResting_; ///< blocks' pairs resting for the rest of the step (few)
     HeldFaces held_;                      ///< circles held on static faces for the rest of the step (few)
+    std::vector<Vec2> pulls_;             ///< per circle, the magnets' kick a0 dt taken back this step (empty: none)
     ExactSprings springs_;                ///< circles on springs to fixed points (closed forms)
     std::vector<Circle> circlesAtStart_;  ///< the step's start, while springs move
     std::vector<Segment> segmentsAtStart_;

@@ -1,6 +1,7 @@
 #pragma once
 // Internal: the one interface every time-step method implements. Not part of the public API.
 
+#include "rube/physics/fields.hpp"
 #include "rube/physics/world.hpp"
 
 #include <memory>
@@ -29,6 +30,10 @@ struct StepContext {
     std::span<const Joint> joints =
         {};             ///< the joints that act (the solver models them; auto gives their islands to it)
     WorkerPool* workers = nullptr; ///< the world's threads (WorldDef::workers); null runs everything here
+    /// The world's magnets, whose kick (field_pass.hpp) every magnetic circle has had at this step's
+    /// start. The exact method takes the kick back and moves the circle under the pull as it does under
+    /// gravity, so that a ball the pull holds on the magnet rests there (field_pass.cpp has no contacts).
+    std::span<const Magnet> magnets = {};
     bool sleep = false; ///< islands may fall asleep this step (WorldDef::sleepSpeed; rigid bodies, joints, ropes:
                         ///< keepsRigidSleep)
 };

@@ -244,6 +244,7 @@ void World::step() {
     if (movesTurningBodies(def_.method)) limitSpeeds(circles_, bodies_, def_, stats_);
     StepContext context = stepContext();
     context.sleep = sleepsThisStep();
+    context.magnets = fields_.magnets;
     // Only the solver puts bodies to sleep, so a world that never let it pays no pass to wake them.
     if (!context.sleep && mayHaveSleepers_) wakeAll(circles_, bodies_);
     mayHaveSleepers_ = context.sleep;

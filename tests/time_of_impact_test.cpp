@@ -302,3 +302,78 @@ TEST_CASE("polynomial roots: the answer is the last double before the sign chang
     CHECK(fall(tf) >= 0.0);
     CHECK(fall(std::nextafter(tf, 1.0)) <= 0.0);
 }
+
+TEST_CASE("out of reach: a pair is only passed over when its gap cannot close, found at the very edge of reach",
+          "[toi][gravity]") {
+    // The searches skip a pair whose surfaces are farther apart than a centre can move within the
+    // horizon, |v| h + |acc| h^2 / 2 (time_of_impact.cpp). A ball moving straight at the other, with
+    // its acceleration along its velocity, travels exactly that far: placed at the reach times
+    // (1 + delta) it must be hit for every delta < 0, a millionth inside the skip's margin as much
+    // as a thousandth, and never past it. Over speeds, accelerations (with, against and across the
+    // motion: reach is an upper bound there), horizons, radii and directions.
+    int hits = 0, cases = 0;
+    for (const double speed : {0.0, 0.3, 4.0, 60.0})
+        for (const double accel : {0.0, 9.81, 400.0})
+            for (const double horizon : {1.0 / 60.0, 0.01, 0.5})
+                for (const double radiusSum : {0.05, 0.45, 3.0})
+                    for (const double angle : {0.0, 1.0, 2.5, 4.0})
+                        for (const double delta : {-1e-3, -1e-5, -1e-7, -1e-9, 1e-4, 1e-2}) {
+                            if (speed == 0.0 && accel == 0.0) continue;
+                            const Vec2 dir{std::cos(angle), std::sin(angle)};
+                            const double reach = speed * horizon + 0.5 * accel * horizon * horizon;
+                            const Vec2 start{1.5, -2.0};
+                            const Vec2 other = start + dir * ((radiusSum + reach * (1.0 + delta)));
+                            // The gap R + reach delta: hit when delta < 0, the last instants of the horizon.
+                            const auto hit = circleCircleCollision({start, dir * speed, radiusSum, dir * accel}, other,
+                                                                   0.0, horizon);
+                            CAPTURE(speed, accel, horizon, radiusSum, angle, delta);
+                            ++cases;
+                            if (delta < 0.0) {
+                                REQUIRE(hit);
+                                CHECK(hit->timeOfImpact <= horizon);
+                                ++hits;
+                            } else {
+                                CHECK_FALSE(hit);
+                            }
+                            // Across the motion (or against it), the reach over-states the travel:
+                            // the same gap is never met.
+                            const Vec2 across{-dir.y, dir.x};
+                            CHECK_FALSE(circleCircleCollision(
+                                {start, across * speed, radiusSum, -across * accel},
+                                start + dir * (radiusSum + reach * (1.0 + std::abs(delta))), 0.0, horizon));
+                        }
+    CHECK(hits > 0);
+    CHECK(cases > hits);
+}
+
+TEST_CASE("out of reach: a segment is passed over only when neither its faces nor its caps can be met",
+          "[toi][gravity]") {
+    // The same edge for a segment: a ball moving straight at its face (hit just inside reach) and at
+    // the point beyond one end, within the segment's own radius of its cap.
+    for (const double speed : {0.5, 8.0})
+        for (const double accel : {0.0, 9.81})
+            for (const double segmentRadius : {0.0, 0.1})
+                for (const double delta : {-1e-3, -1e-7, -1e-9, 1e-4}) {
+                    CAPTURE(speed, accel, segmentRadius, delta);
+                    const double horizon = 1.0 / 60.0, r = 0.2;
+                    const double reach = speed * horizon + 0.5 * accel * horizon * horizon;
+                    const double gap = reach * (1.0 + delta);
+                    // Face: the segment from (-1, 0) to (1, 0), the ball coming straight down at it.
+                    const double y = r + segmentRadius + gap;
+                    const auto face = circleSegmentCollision({{0.3, y}, {0.0, -speed}, r, {0.0, -accel}}, {-1.0, 0.0},
+                                                             {1.0, 0.0}, segmentRadius, horizon);
+                    // Cap: the ball coming along the segment's line at its end b.
+                    const auto cap = circleSegmentCollision(
+                        {{1.0 + r + segmentRadius + gap, 0.0}, {-speed, 0.0}, r, {-accel, 0.0}}, {-1.0, 0.0},
+                        {1.0, 0.0}, segmentRadius, horizon);
+                    if (delta < 0.0) {
+                        REQUIRE(face);
+                        CHECK_FALSE(face->lineCap);
+                        REQUIRE(cap);
+                        CHECK(cap->lineCap);
+                    } else {
+                        CHECK_FALSE(face);
+                        CHECK_FALSE(cap);
+                    }
+                }
+}

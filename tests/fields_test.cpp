@@ -147,7 +147,7 @@ TEST_CASE("fields: a magnet pulls steel with strength / d^2 and leaves other bal
         world.step();
         const double dt = 1.0 / 60.0, a0 = -0.5 / 4.0; // F / m = (2 / 2^2) / 4 at x = 2
         const Circle& c = world.circles()[steel];
-        if (method == Method::exact || method == Method::automatic) {
+        if (method == Method::exact || method == Method::automatic || method == Method::solver) {
             // Velocity Verlet: x1 = x0 + a0 dt^2 / 2, v1 = (a0 + a1) dt / 2 with a1 the pull at x1.
             const double x1 = 2.0 + 0.5 * a0 * dt * dt, a1 = -2.0 / (x1 * x1) / 4.0;
             CHECK(c.position.x == Approx(x1).epsilon(1e-14));
@@ -526,7 +526,7 @@ TEST_CASE("fields: a ball a magnet holds rests on it, at rest and touching, unde
     const double weight = 9.81;
     const double holds = m * weight * contact * contact; // strength whose pull at contact is the ball's weight
     const Vec2 gravities[] = {{0.0, -weight}, {0.5 * weight, -0.866 * weight}, {weight, 0.0}, {0.0, 0.0}};
-    for (const Method method : {Method::exact, Method::automatic})
+    for (const Method method : {Method::exact, Method::automatic, Method::solver})
         for (const Vec2 gravity : gravities)
             for (const double times : {1.5, 4.0, 20.0})
                 for (const double dt : {1.0 / 60.0, 1.0 / 100.0, 1.0 / 240.0})
@@ -548,11 +548,14 @@ TEST_CASE("fields: a ball a magnet holds rests on it, at rest and touching, unde
                             for (const Impact& impact : world.lastImpacts())
                                 hardest = std::max(hardest, impact.approachSpeed);
                         }
-                        CHECK(fastest < 1e-9);
+                        // The solver's contacts are soft: the ball rests a little into the magnet,
+                        // the load over the contact's spring (micrometres).
+                        const bool soft = method == Method::solver;
+                        CHECK(fastest < (soft ? 1e-6 : 1e-9));
                         // Along the magnet, frictionless, nothing stops what round-off leaves of a
                         // bounce when no gravity pulls the ball back below the magnet: micrometres a second.
                         CHECK(sliding < (gravity == Vec2{} ? 1e-5 : 1e-9));
-                        CHECK(farthest < 1e-9);
+                        CHECK(farthest < (soft ? 1e-4 : 1e-9));
                         // Resting contact, not impacts: nothing meets the magnet faster than the pull
                         // less gravity gives it over a step.
                         CHECK(hardest <= times * weight * dt * 1.0000001);
@@ -579,7 +582,7 @@ TEST_CASE("fields: too weak a magnet above a ball lets it fall, as F = strength 
 TEST_CASE("fields: a magnet under the floor holds a steel ball on it, still", "[fields][magnet]") {
     // A face holds the ball with what it leaves of g + F / m (here nothing: both press into the floor),
     // so the ball stands still on it instead of being kicked into it and bounced every step.
-    for (const Method method : {Method::exact, Method::automatic})
+    for (const Method method : {Method::exact, Method::automatic, Method::solver})
         for (const double strength : {5.0, 50.0, 500.0})
             for (const double bounciness : {0.3, 0.9}) {
                 CAPTURE(methodName(method), strength, bounciness);
@@ -608,8 +611,12 @@ TEST_CASE("fields: a magnet under the floor holds a steel ball on it, still", "[
                     lowest = std::min(lowest, c.position.y);
                     highest = std::max(highest, c.position.y);
                 }
-                CHECK(fastest < 1e-9);
-                CHECK(lowest == Approx(0.2).margin(1e-9));
-                CHECK(highest == Approx(0.2).margin(1e-9));
+                // The solver's contact is soft: the ball rests the load over its spring into the floor,
+                // 0.11 mm when the strongest magnet presses it at 51 g; still, it stays where it rests.
+                const double give = method == Method::solver ? 2e-4 : 1e-9;
+                CHECK(highest - lowest < 1e-9);
+                CHECK(fastest < (method == Method::solver ? 1e-6 : 1e-9));
+                CHECK(lowest == Approx(0.2).margin(give));
+                CHECK(highest == Approx(0.2).margin(give));
             }
 }

@@ -110,6 +110,13 @@ Vec2 magnetForce(const Magnet& magnet, Vec2 position) {
     return d * (magnet.strength / (clamped * clamped * distance));
 }
 
+Vec2 magnetKick(std::span<const Magnet> magnets, const Circle& c, double dt) {
+    Vec2 kick;
+    if (!c.magnetic || c.motion != Motion::dynamic) return kick;
+    for (const Magnet& magnet : magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
+    return kick;
+}
+
 void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots,
                  const AirDrag& airDrag, Vec2 gravity, double time, double dt) {
     for (Circle& c : circles) {
@@ -125,8 +132,7 @@ void applyFields(std::span<Circle> circles, const Fields& fields, std::span<cons
         for (const Wind& wind : fields.winds)
             if (wind.on && wind.contains(c.position))
                 kick += windKick(c.velocity, wind.airVelocity(), width * wind.drag * c.inverseMass, dt);
-        if (c.magnetic)
-            for (const Magnet& magnet : fields.magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
+        if (c.magnetic) kick += magnetKick(fields.magnets, c, dt);
         for (const Water& water : fields.waters) kick += waterKick(c, water, gravity, dt);
         c.velocity += kick;
     }

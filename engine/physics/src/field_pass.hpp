@@ -15,6 +15,11 @@ namespace rube {
 void applyFields(std::span<Circle> circles, const Fields& fields, std::span<const int> thrusterSlots,
                  const AirDrag& airDrag, Vec2 gravity, double time, double dt);
 
+/// What the magnets do to circle `c`'s velocity over dt, F dt / m summed over them (zero unless it is
+/// magnetic and dynamic). applyFields kicks with it; exact and the solver take that kick back and
+/// move the circle under the pull as under gravity (StepContext::magnets).
+Vec2 magnetKick(std::span<const Magnet> magnets, const Circle& c, double dt);
+
 /// The second half of linear air drag's step, after the method's move: maps each dynamic circle's
 /// velocity onto the exact v(dt) of dv/dt = g - k v, so that position and velocity are both exact.
 void linearDragAfterMove(std::span<Circle> circles, const AirDrag& airDrag, Vec2 gravity, double dt);

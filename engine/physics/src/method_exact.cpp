@@ -15,6 +15,7 @@
 #include "exact_resting_pairs.hpp"
 #include "exact_settle.hpp"
 #include "exact_spring_impacts.hpp"
+#include "field_pass.hpp"
 #include "kinematic_pose.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
@@ -174,19 +175,12 @@ private:
     // Verlet, x1 = x0 + v0 dt + a0 dt^2 / 2 and v1 = v0 + (a0 + a1) dt / 2, second order where the
     // kick is first (a steel ball swinging under a magnet keeps its swing). A spring's circle keeps
     // its closed form and the kick.
-    Vec2 pullOf(const StepContext& ctx, const Circle& c, double dt) const {
-        Vec2 kick; // summed as field_pass.cpp sums it, so the kick taken back is the one given
-        for (const Magnet& magnet : ctx.magnets) kick += magnetForce(magnet, c.position) * (c.inverseMass * dt);
-        return kick;
-    }
     void pullByMagnets(StepContext& ctx, double dt) {
         pulls_.assign(ctx.circles.size(), Vec2{});
         for (int i = 0; i < circleCount_; ++i) {
             Circle& c = ctx.circles[static_cast<std::size_t>(i)];
-            if (!c.magnetic || c.motion != Motion::dynamic || c.inverseMass == 0.0 ||
-                (!springs_.empty() && springs_.pathOf(i)))
-                continue;
-            const Vec2 kick = pullOf(ctx, c, dt);
+            if (!springs_.empty() && springs_.pathOf(i)) continue;
+            const Vec2 kick = magnetKick(ctx.magnets, c, dt);
             if (kick == Vec2{}) continue;
             c.velocity -= kick;
             pulls_[static_cast<std::size_t>(i)] = kick;
@@ -197,7 +191,7 @@ private:
         for (std::size_t i = 0; i < pulls_.size(); ++i) {
             if (pulls_[i] == Vec2{}) continue;
             Circle& c = ctx.circles[i];
-            c.velocity += (pullOf(ctx, c, dt) - pulls_[i]) * 0.5;
+            c.velocity += (magnetKick(ctx.magnets, c, dt) - pulls_[i]) * 0.5;
         }
     }
 

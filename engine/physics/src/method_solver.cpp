@@ -117,7 +117,7 @@ private:
     void findFriction(const StepContext& ctx);
     void markWarmContacts();
     void flyFreeCirclesExactly(const StepContext& ctx, double dt);
-    void takeBackMagnetKicks(const StepContext& ctx, int substeps);
+    void takeBackMagnetKicks(const StepContext& ctx, double dt, int substeps);
     void restPulledContacts(const StepContext& ctx, double dt);
     // Per circle: a bullet, or pulled by a magnet this step (carryPastImpact leaves both alone).
     std::span<const std::uint8_t> notCarried() {
@@ -378,7 +378,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
     const FrictionState* friction = anyRotation_ ? &frictionState : nullptr;
     if (hasRigid_) rigid_.bind(bodies_, anyRotation_ ? std::span<double>(omega_) : std::span<double>{}, ctx.circles);
     if (!hasRigid_) markWarmContacts();
-    takeBackMagnetKicks(ctx, substeps);
+    takeBackMagnetKicks(ctx, dt, substeps);
     for (int k = 0; k < substeps; ++k) {
         for (int i = 0; i < circleCount_; ++i)
             if (isDynamic_[i]) bodies_[i].velocity += gravityStep;
@@ -421,7 +421,7 @@ void SolverMethod::solve(const StepContext& ctx, double dt) {
 // back and given as gravity is, a share each substep, so the contact holds the ball as it holds one
 // resting under gravity; after the step the velocity gets half the change of pull (finish: velocity
 // Verlet, as exact). Asleep circles are not dynamic this step: the kick has woken any it reached.
-void SolverMethod::takeBackMagnetKicks(const StepContext& ctx, int substeps) {
+void SolverMethod::takeBackMagnetKicks(const StepContext& ctx, double dt, int substeps) {
     pullKicks_.clear();
     pullSteps_.clear();
     if (ctx.magnets.empty()) return;
@@ -429,7 +429,7 @@ void SolverMethod::takeBackMagnetKicks(const StepContext& ctx, int substeps) {
     pullSteps_.assign(static_cast<std::size_t>(circleCount_), Vec2{});
     for (int i = 0; i < circleCount_; ++i) {
         if (!isDynamic_[i]) continue;
-        const Vec2 kick = magnetKick(ctx.magnets, ctx.circles[static_cast<std::size_t>(i)], ctx.def.timeStep);
+        const Vec2 kick = magnetKick(ctx.magnets, ctx.circles[static_cast<std::size_t>(i)], dt);
         if (kick == Vec2{}) continue;
         bodies_[i].velocity -= kick;
         pullKicks_[static_cast<std::size_t>(i)] = kick;

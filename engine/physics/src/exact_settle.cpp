@@ -31,14 +31,12 @@ constexpr double kSupportSine = 1e-6;
 // speed the spring gave it. A magnet's pull likewise, with gravity: |g + a| (a ball the magnet holds
 // from below sinks into it by |g + a| dt^2 / 2 in the step). Impacts within the step keep the
 // world's: they are real approaches.
-double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, std::span<const Vec2> pulls, double dt,
-                      int i, int j) {
+double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, const MagnetPulls& pulls, double dt, int i,
+                      int j) {
     double speed = ctx.restingSpeed;
     if (!pulls.empty())
-        for (const int k : {i, j}) {
-            const Vec2 kick = k >= 0 ? pulls[static_cast<std::size_t>(k)] : Vec2{};
-            if (kick != Vec2{}) speed = std::max(speed, 2.0 * (ctx.def.gravity * dt + kick).length() + 1e-3);
-        }
+        for (const int k : {i, j})
+            if (k >= 0) speed = std::max(speed, pulls.restingSpeed(static_cast<std::size_t>(k), ctx.def.gravity, dt));
     if (springs.empty()) return speed;
     for (const int k : {i, j}) {
         const SpringPath* path = k >= 0 ? springs.pathOf(k) : nullptr;
@@ -54,7 +52,7 @@ double restingSpeedOf(const StepContext& ctx, const ExactSprings& springs, std::
 } // namespace
 
 void ExactSettle::settle(StepContext& ctx, double dt, const RestingPairs& resting, const ExactSprings& springs,
-                         std::vector<BlockPair>& blockResting, std::span<const Vec2> pulls) {
+                         std::vector<BlockPair>& blockResting, const MagnetPulls& pulls) {
     collectContacts(ctx, ctx.restingSpeed * dt, resting);
     if (!ctx.bodies.empty()) settleBlockContacts(ctx, ctx.restingSpeed * dt, blockResting);
     if (contacts_.empty()) return;
@@ -134,7 +132,7 @@ void ExactSettle::orderFromTheGroundUp(const StepContext& ctx) {
 
 // Pushes one contact apart and stops a resting approach (C = 0); returns the overlap removed.
 double ExactSettle::settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs,
-                           std::span<const Vec2> pulls, double dt) const {
+                           const MagnetPulls& pulls, double dt) const {
     Circle& c = ctx.circles[contact.circle];
     std::optional<Overlap> overlap;
     Vec2 otherPosition, otherVelocity;

@@ -8,9 +8,9 @@
 #include "block_pairs.hpp"
 #include "exact_resting_pairs.hpp"
 #include "exact_springs.hpp"
+#include "magnet_pulls.hpp"
 #include "step_method.hpp"
 
-#include <span>
 #include <vector>
 
 namespace rube {
@@ -20,10 +20,10 @@ class ExactSettle {
 public:
     /// Settles every touching pair of `ctx` after a step of `dt`: circles (a circle resting on a face
     /// keeps the side `resting` says it came from; a spring-held circle's threshold grows with the
-    /// acceleration its spring gives it, a magnet-pulled one's with gravity and the pull's kick a dt in
-    /// `pulls`, per circle or empty) and lecture 3's blocks (`blockResting`).
+    /// acceleration its spring gives it, a magnet-pulled one's with gravity and the pull `pulls` took
+    /// back) and lecture 3's blocks (`blockResting`).
     void settle(StepContext& ctx, double dt, const RestingPairs& resting, const ExactSprings& springs,
-                std::vector<BlockPair>& blockResting, std::span<const Vec2> pulls = {});
+                std::vector<BlockPair>& blockResting, const MagnetPulls& pulls);
 
 private:
     // A pair touching (or nearly) at the end of a step; `side` is a segment face's side.
@@ -36,7 +36,7 @@ private:
     };
     void collectContacts(const StepContext& ctx, double slop, const RestingPairs& resting);
     void orderFromTheGroundUp(const StepContext& ctx);
-    double settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs, std::span<const Vec2> pulls,
+    double settle(StepContext& ctx, const Contact& contact, const ExactSprings& springs, const MagnetPulls& pulls,
                   double dt) const;
 
     std::vector<Contact> contacts_; ///< the settle's pairs

@@ -15,7 +15,7 @@
 #include "exact_resting_pairs.hpp"
 #include "exact_settle.hpp"
 #include "exact_spring_impacts.hpp"
-#include "field_pass.hpp"
+#include "magnet_pulls.hpp"
 #include "kinematic_pose.hpp"
 #include "resolve.hpp"
 #include "step_method.hpp"
@@ -95,7 +95,7 @@ public:
             }
         }
         settle_.settle(ctx, dt, resting_, springs_, blockResting_, pulls_);
-        if (!pulls_.empty()) finishPulls(ctx, dt);
+        pulls_.finish(ctx.circles, ctx.magnets, dt);
         ctx.stats.maxEventsInStep = std::max(ctx.stats.maxEventsInStep, events);
     }
 
@@ -165,33 +165,17 @@ private:
         return best;
     }
 
-    // A magnet's pull, kicked in whole at the step's start (field_pass.cpp), brought a ball it holds
-    // on the magnet back at the kick's speed every step: a real impact, a bounce, and a ball standing
-    // still that reported the same speed away from the magnet every step. Here the kick is taken back
-    // and the circle moves under the pull as under gravity, a constant acceleration a0 = F(x0) / m
-    // over the step: it meets what holds it at the speed the gap allows and rests there (C = 0), and
-    // a face it rests on holds it with what it leaves of g + a0 (exact_held_faces.hpp). After the
-    // step the velocity gets (a1 - a0) dt / 2 with a1 the pull where it ended (finishPulls): velocity
-    // Verlet, x1 = x0 + v0 dt + a0 dt^2 / 2 and v1 = v0 + (a0 + a1) dt / 2, second order where the
-    // kick is first (a steel ball swinging under a magnet keeps its swing). A spring's circle keeps
-    // its closed form and the kick.
+    // A magnet's pull moves a circle as gravity does (magnet_pulls.hpp): it meets what holds it at
+    // the speed the gap allows and rests there (C = 0), and a face it rests on holds it with what it
+    // leaves of g + a0 (exact_held_faces.hpp). A spring's circle keeps its closed form and the kick.
     void pullByMagnets(StepContext& ctx, double dt) {
-        pulls_.assign(ctx.circles.size(), Vec2{});
+        pulls_.takeBack(ctx.circles, ctx.magnets, dt,
+                        [&](std::size_t i) { return !springs_.empty() && springs_.pathOf(static_cast<int>(i)); });
         for (int i = 0; i < circleCount_; ++i) {
-            Circle& c = ctx.circles[static_cast<std::size_t>(i)];
-            if (!springs_.empty() && springs_.pathOf(i)) continue;
-            const Vec2 kick = magnetKick(ctx.magnets, c, dt);
+            const Vec2 kick = pulls_.kick(static_cast<std::size_t>(i));
             if (kick == Vec2{}) continue;
-            c.velocity -= kick;
-            pulls_[static_cast<std::size_t>(i)] = kick;
+            ctx.circles[static_cast<std::size_t>(i)].velocity -= kick;
             held_.setFreeAcceleration(i, ctx.def.gravity + kick / dt);
-        }
-    }
-    void finishPulls(StepContext& ctx, double dt) const {
-        for (std::size_t i = 0; i < pulls_.size(); ++i) {
-            if (pulls_[i] == Vec2{}) continue;
-            Circle& c = ctx.circles[i];
-            c.velocity += (magnetKick(ctx.magnets, c, dt) - pulls_[i]) * 0.5;
         }
     }
 
@@ -347,7 +331,7 @@ private:
     std::vector<Vec2> centres_;           ///< the clean-up's side reference after a cap hit
     std::vector<BlockPair> blockResting_; ///< blocks' pairs resting for the rest of the step (few)
     HeldFaces held_;                      ///< circles held on static faces for the rest of the step (few)
-    std::vector<Vec2> pulls_;             ///< per circle, the magnets' kick a0 dt taken back this step (empty: none)
+    MagnetPulls pulls_;                   ///< the magnets' kicks taken back this step (magnet_pulls.hpp)
     ExactSprings springs_;                ///< circles on springs to fixed points (closed forms)
     std::vector<Circle> circlesAtStart_;  ///< the step's start, while springs move
     std::vector<Segment> segmentsAtStart_;

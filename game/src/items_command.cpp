@@ -66,6 +66,7 @@ void drawKind(ItemKind kind, const render::Camera& camera, render::FrameSize siz
     for (const Segment& s : run.world().segments())
         list.capsule(pt(s.a), pt(s.b), static_cast<float>(s.radius),
                      {palette["ground"], palette["ground_outline"], 1.5f});
+    drawConveyors(run.world(), list);   // a running belt's chevrons, as in a level
     drawRigidBodies(run.world(), list); // crates and dominoes: boxes, drawn as in a level
     kind->draw({run, 0, list});
     const float ppm = camera.pixelsPerMetre(size);

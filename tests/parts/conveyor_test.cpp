@@ -111,7 +111,7 @@ TEST_CASE("conveyor: a crate at rest on it reaches the belt's speed after v / a 
     }
 }
 
-TEST_CASE("conveyor: switched off it holds a crate (mu cos theta >= sin theta); a switch starts and stops it",
+TEST_CASE("conveyor: switched off it holds a crate (mu cos theta >= sin theta), and a switch starts and stops it",
           "[parts][conveyor]") {
     for (const double degrees : {0.0, 15.0}) {
         CAPTURE(degrees);

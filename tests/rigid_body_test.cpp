@@ -403,6 +403,39 @@ TEST_CASE("a box on a conveyor slides at mu g until it runs at the belt's speed,
     }
 }
 
+TEST_CASE("a belt started under a box asleep on it wakes it and carries it; stopped, the box slides to rest",
+          "[rigid][conveyor]") {
+    // World::setSurfaceSpeed (a conveyor's switch). Started: kinetic friction takes the box to the belt's
+    // speed u; stopped: it slides against the still belt at mu g and comes to rest u^2 / (2 mu g) on.
+    for (const double mu : {0.3, 0.8}) {
+        for (const double speed : {-2.0, 1.5}) {
+            WorldDef def; // sleeping on: the default
+            def.method = Method::solver;
+            def.gravity = {0.0, -kG};
+            World world(def);
+            const SegmentId belt = world.addSegment(
+                SegmentDef{.a = {-40.0, 0.0}, .b = {40.0, 0.0}, .material = {0.0, 1.0}});
+            const BodyId crate = world.addBody(box({0.0, 0.15}, 0.8, 0.3, 2.0, 0.0, mu));
+            run(world, 3.0);
+            INFO("mu " << mu << ", belt " << speed << " m/s");
+            REQUIRE(world.body(crate).sleep.asleep);
+            world.setSurfaceSpeed(belt, speed);
+            CHECK_FALSE(world.body(crate).sleep.asleep);
+            const double slide = std::abs(speed) / (mu * kG);
+            run(world, slide + 0.5);
+            CHECK(world.body(crate).velocity.x == Approx(speed).margin(1e-6));
+            world.setSurfaceSpeed(belt, 0.0);
+            const double from = world.body(crate).position.x;
+            run(world, slide + 0.5);
+            CHECK(std::abs(world.body(crate).velocity.x) < 1e-6);
+            CHECK(world.body(crate).position.x - from ==
+                  Approx(std::copysign(speed * speed / (2.0 * mu * kG), speed)).epsilon(0.02));
+            CHECK(world.segment(belt).surfaceSpeed == 0.0);
+            CHECK_THROWS_AS(world.setSurfaceSpeed(belt, std::nan("")), std::invalid_argument);
+        }
+    }
+}
+
 TEST_CASE("a ball rolls down a tilted fixed plank at (2/3) g sin theta", "[rigid]") {
     World world = solverWorld();
     const double theta = 20.0 * kDegree;

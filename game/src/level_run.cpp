@@ -117,7 +117,7 @@ void LevelRun::addItem(const ItemDesc& item) {
         if (state.circle.isNull()) state.circle = circle;
         handles.circles.push_back(circle);
     }
-    for (const SegmentDef& s : bodies.segments) world_.addSegment(s);
+    for (const SegmentDef& s : bodies.segments) state.segments.push_back(world_.addSegment(s));
     for (RigidBodyDef b : bodies.rigidBodies) {
         b.userValue = items_.size() + 1;
         handles.bodies.push_back(world_.addBody(b));

@@ -35,6 +35,7 @@ struct ItemState {
     CircleId circle;    ///< its circle in the World: null when it has none, or no longer has one (a bomb gone off)
     BodyId body;        ///< its first rigid body in the World: null when it has none
     std::vector<JointId> joints; ///< its joints (ItemBodies::joints), in order, once every item is in the World
+    std::vector<SegmentId> segments; ///< its segments (ItemBodies::segments), in order
     double aim = 0.0;   ///< cannons: the barrel's angle now, radians
     bool hit = false;   ///< targets and switches: touched by a ball
     bool pressed = false; ///< switches: toggled by a click or a script's action (drawn as one a ball pressed);

@@ -9,6 +9,7 @@
 #include "world_handles.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
@@ -300,6 +301,19 @@ void World::setEnabled(SegmentId id, bool enabled) {
         insertSlot(segments_, table.entry(id.index).slot, tables_->parkedSegments[static_cast<std::size_t>(id.index)]);
     }
     remapSlots(remap);
+}
+
+void World::setSurfaceSpeed(SegmentId id, double speed) {
+    const HandleTable::Entry& entry = tables_->segments.at(id.index, id.generation, "segment");
+    if (!std::isfinite(speed)) throw std::invalid_argument("a segment's surface speed must be finite");
+    if (!entry.enabled) {
+        tables_->parkedSegments[static_cast<std::size_t>(id.index)].surfaceSpeed = speed; // as it will be
+        return;
+    }
+    Segment& s = segments_[static_cast<std::size_t>(entry.slot)];
+    if (s.surfaceSpeed == speed) return;
+    s.surfaceSpeed = speed;
+    wakeNear(s); // a crate asleep on a belt that starts is carried, one on a belt that stops slides on
 }
 
 void World::setEnabled(BodyId id, bool enabled) {

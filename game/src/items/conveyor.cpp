@@ -89,23 +89,14 @@ public:
         (void)lightest, (void)g, (void)seconds;
         return 2.0 * std::abs(item.params.as<ConveyorParams>().speed);
     }
-    // Switched: the band is replaced by the same segment running (or still). The World keeps a
-    // segment's surface speed as it was made, so the old band is found by its ends (the parts'
-    // segments are fixed, so their ends are the very numbers band() made) and removed, which wakes
-    // what rested on it, as the lift does.
+    // Switched: the band's surface runs at `speed` or stands still (World::setSurfaceSpeed wakes what
+    // sleeps on it).
     void trigger(LevelRun& run, int item) const override {
         ItemState& state = run.partState(item);
-        const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
-        World& world = run.partWorld();
-        const SegmentDef old = band(desc, running(desc, state));
-        const auto segments = world.segments();
-        for (std::size_t i = 0; i < segments.size(); ++i) {
-            if (segments[i].a != old.a || segments[i].b != old.b || segments[i].path >= 0) continue;
-            world.remove(world.segmentId(static_cast<int>(i)));
-            break;
-        }
+        if (state.segments.empty()) return;
         state.pressed = !state.pressed;
-        world.addSegment(band(desc, running(desc, state)));
+        const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
+        run.partWorld().setSurfaceSpeed(state.segments.front(), band(desc, running(desc, state)).surfaceSpeed);
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The band and its chevrons are drawn with the world's segments (moving_marks.cpp, while it runs);

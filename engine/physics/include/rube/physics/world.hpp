@@ -185,6 +185,10 @@ public:
     /// is off), waking the islands of its circles; throws std::invalid_argument for a joint of another
     /// kind, and as addJoint does for a negative or non-finite force or speed.
     void setJointMotor(JointId joint, const JointMotor& motor);
+    /// Sets a segment's surface speed (a conveyor a switch starts or stops: 0 is still), waking what
+    /// sleeps on it, since a body resting on a belt that starts must feel it; throws
+    /// std::invalid_argument for a speed that is not finite.
+    void setSurfaceSpeed(SegmentId segment, double speed);
     /// True while the handle names something of this world (not removed, not null).
     bool isValid(CircleId id) const;
     bool isValid(SegmentId id) const; ///< as isValid(CircleId)

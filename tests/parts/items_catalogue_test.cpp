@@ -145,11 +145,15 @@ TEST_CASE("a radius or length key's written default is the size the kind's defau
                 CHECK(std::any_of(bodies.circles.begin(), bodies.circles.end(),
                                   [&](const CircleDef& c) { return near(c.radius, value); }));
             else // a board's segment, or a rigid board's box (a seesaw's plank) end to end, or a
-                 // capsule (a hammer's handle) between its caps' centres
+                 // capsule (a hammer's handle) between its caps' centres, or a rod that is a joint (a
+                 // pendulum's: from the world's pivot to its anchor on the bob, that far from its centre)
                 CHECK((std::any_of(bodies.segments.begin(), bodies.segments.end(),
                                    [&](const SegmentDef& s) { return near((s.b - s.a).length(), value); }) ||
                        std::any_of(bodies.rigidBodies.begin(), bodies.rigidBodies.end(),
-                                   [&](const RigidBodyDef& b) { return near(2.0 * b.halfExtents.x, value); })));
+                                   [&](const RigidBodyDef& b) { return near(2.0 * b.halfExtents.x, value); }) ||
+                       std::any_of(bodies.joints.begin(), bodies.joints.end(), [&](const ItemJoint& j) {
+                           return j.a.to == ItemJointEnd::To::world && near(j.def.localAnchorB.length(), value);
+                       })));
             ++checked;
         }
     }

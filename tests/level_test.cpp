@@ -258,9 +258,9 @@ TEST_CASE("level errors are file:line:col messages", "[level]") {
           "t.toml:12:10: unknown target 'U' (the level has: T)");
     CHECK(firstError(floor + "[[item]]\nkind = \"switch\"\nposition = [0, 1]\ntriggers = \"gun\"\n") ==
           "t.toml:8:12: unknown cannon, bomb, fan, magnet, rocket, scissors, timer, candle, laser, lift, conveyor, "
-          "motor, launcher, glove, gate, hammer, flipper, car or rope 'gun' (the level has no cannon, bomb, fan, "
+          "motor, launcher, glove, gate, hammer, flipper, car, pendulum or rope 'gun' (the level has no cannon, bomb, fan, "
           "magnet, rocket, scissors, timer, candle, laser, lift, conveyor, motor, launcher, glove, gate, hammer, "
-          "flipper, car or rope)");
+          "flipper, car, pendulum or rope)");
     CHECK(firstError(floor + "[[item]]\nkind = \"bomb\"\nposition = [0, 1]\nstrength = -2\n") ==
           "t.toml:8:12: strength must be greater than 0 and at most 10000, got -2");
     CHECK(firstError(floor + "[inventory]\nplank = \"two\"\n") == "t.toml:6:9: plank must be an integer, got string");
@@ -618,7 +618,7 @@ TEST_CASE("rope: a switch may name a rope, a name that is neither item nor rope 
     CHECK(firstError(base + "triggers = \"lnie\"\n") ==
           "t.toml:13:12: unknown cannon, bomb, fan, magnet, rocket, "
           "scissors, timer, candle, laser, lift, conveyor, motor, launcher, glove, "
-          "gate, hammer, flipper, car or rope 'lnie' (did you mean 'line'?)");
+          "gate, hammer, flipper, car, pendulum or rope 'lnie' (did you mean 'line'?)");
 }
 
 TEST_CASE("paddle: the ramp too steep misses the paddle, and a paddle that never turns never throws the wheel",

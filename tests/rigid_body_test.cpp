@@ -403,7 +403,7 @@ TEST_CASE("a box on a conveyor slides at mu g until it runs at the belt's speed,
     }
 }
 
-TEST_CASE("a belt started under a box asleep on it wakes it and carries it; stopped, the box slides to rest",
+TEST_CASE("a belt started under a box asleep on it wakes it and carries it, and stopped lets it slide to rest",
           "[rigid][conveyor]") {
     // World::setSurfaceSpeed (a conveyor's switch). Started: kinetic friction takes the box to the belt's
     // speed u; stopped: it slides against the still belt at mu g and comes to rest u^2 / (2 mu g) on.

@@ -139,7 +139,7 @@ TEST_CASE("car: after its run time it coasts to rest and stays there", "[parts][
     }
 }
 
-TEST_CASE("car: waiting for a trigger it stays still; triggered, it drives", "[parts][car]") {
+TEST_CASE("car: waiting for a trigger it stays still, and triggered it drives", "[parts][car]") {
     for (const char* facing : {"right", "left"}) {
         CAPTURE(facing);
         const std::string keys = std::string("on = false\nfacing = \"") + facing + "\"\n";

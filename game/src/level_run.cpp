@@ -276,6 +276,10 @@ void LevelRun::step() {
     };
     std::vector<Struck> struckItems;
     for (const Impact& impact : world_.lastImpacts()) {
+        // A ball striking an item's rigid body (a flipper's bat) touches that item as well.
+        if (impact.otherKind == Other::body && impact.circle >= 0)
+            if (const int item = itemOfBody(impact.other); item >= 0)
+                struckItems.push_back({item, impact.pointOfImpact, nameOf(world_.circleId(impact.circle))});
         // What was struck: the other circle (whoever struck it: a ball, or a box or domino, whose impact
         // has circle -1 and body set), or the circle a body struck (a ball's impact on a body).
         int struck = -1;

@@ -222,8 +222,9 @@ public:
     /// True while a timer of its own will still act (a fuse not yet burnt, a fire_at not yet come):
     /// `rube solve` ends a run when nothing moves only when no part waits.
     virtual bool waits(const ItemDesc& item, const ItemState& state) const { return (void)item, (void)state, false; }
-    /// A ball touched it at `point` (`by` names the ball, as LevelRun::nameOf does): targets and
-    /// switches report it, a bomb on impact goes off.
+    /// A ball touched it at `point` (`by` names the ball, as LevelRun::nameOf does), on its circle or
+    /// on one of its rigid bodies: targets and switches report it, a bomb on impact goes off, a
+    /// flipper struck on its bat swings up.
     virtual void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const {
         (void)run, (void)item, (void)point, (void)by;
     }

@@ -74,7 +74,7 @@ public:
     }
     void afterStep(LevelRun& run, int item) const override {
         const BombParams& p = run.items()[static_cast<std::size_t>(item)].params.as<BombParams>();
-        if (p.trigger == Trigger::timer && run.world().time() >= p.fuse - 1e-9) trigger(run, item);
+        if (p.trigger == Trigger::timer && timeReached(run.world(), p.fuse)) trigger(run, item);
     }
     bool waits(const ItemDesc& item, const ItemState& state) const override {
         return item.params.as<BombParams>().trigger == Trigger::timer && !state.detonatedAt;

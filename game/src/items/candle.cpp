@@ -90,8 +90,7 @@ public:
         const CandleParams& p = desc.params.as<CandleParams>();
         ItemState& state = run.partState(item);
         const auto lit = litAt(p, state);
-        // The bomb's fuse rule: a time within 1e-9 s of the step's end is reached, not missed by rounding.
-        if (state.fired || !lit || run.world().time() < *lit + p.burnTime - 1e-9) return;
+        if (state.fired || !lit || !timeReached(run.world(), *lit + p.burnTime)) return;
         state.fired = true;
         run.cutRope(p.burns);
     }

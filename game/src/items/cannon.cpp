@@ -80,7 +80,7 @@ public:
     }
     void afterStep(LevelRun& run, int item) const override {
         const auto& fireAt = run.items()[static_cast<std::size_t>(item)].params.as<CannonParams>().fireAt;
-        if (fireAt && !run.states()[static_cast<std::size_t>(item)].fired && run.world().time() >= *fireAt - 1e-9)
+        if (fireAt && !run.states()[static_cast<std::size_t>(item)].fired && timeReached(run.world(), *fireAt))
             run.fire(item);
     }
     bool waits(const ItemDesc& item, const ItemState& state) const override {

@@ -167,8 +167,7 @@ public:
         const CarParams& p = run.items()[static_cast<std::size_t>(item)].params.as<CarParams>();
         ItemState& state = run.partState(item);
         const auto start = startedAt(p, state);
-        // The timer's rule: a time within 1e-9 s of the step's end is reached, not missed by rounding.
-        if (state.fired || !start || run.world().time() < *start + p.run - 1e-9) return;
+        if (state.fired || !start || !timeReached(run.world(), *start + p.run)) return;
         state.fired = true;
         setMotors(run, item, {0.0, kGearDrag});
     }

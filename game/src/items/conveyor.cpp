@@ -96,7 +96,8 @@ public:
         if (state.segments.empty()) return;
         state.pressed = !state.pressed;
         const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
-        run.partWorld().setSurfaceSpeed(state.segments.front(), band(desc, running(desc, state)).surfaceSpeed);
+        run.partWorld().setSurfaceSpeed(state.segments.front(),
+                                        running(desc, state) ? desc.params.as<ConveyorParams>().speed : 0.0);
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The band and its chevrons are drawn with the world's segments (moving_marks.cpp, while it runs);

@@ -56,6 +56,12 @@ double upwards(const FlipperParams& p) { return p.side == Side::left ? 1.0 : -1.
 // The motor driving the bat up (or, `up` false, back down against its rest).
 JointMotor motorOf(const FlipperParams& p, bool up) { return {(up ? 1.0 : -1.0) * upwards(p) * p.speed, p.torque}; }
 
+// Whether its motor drives it up now (it rests, or is going down, otherwise).
+bool drivenUp(const World& world, const ItemState& state, const FlipperParams& p) {
+    return !state.joints.empty() && !state.joints.front().isNull() &&
+           world.joint(state.joints.front()).def.motor.speed * upwards(p) > 0.0;
+}
+
 // The tapered bat's outline: round about the hinge (kHubRadius), round about the tip (kBatRadius),
 // straight between, as drawn for the bat at `angle`.
 void batOutline(Vec2 hinge, double angle, double length, double hub, double tip, std::vector<render::Point>& out) {
@@ -138,15 +144,12 @@ public:
     }
     // With trigger = "impact": the first ball to strike the bat swings it up (once; after that only
     // switches, clicks and scripts move it).
-    void afterStep(LevelRun& run, int item) const override {
+    void hit(LevelRun& run, int item, Vec2 point, const std::string& by) const override {
+        (void)point, (void)by;
         const ItemDesc& desc = run.items()[static_cast<std::size_t>(item)];
-        const ItemState& state = run.states()[static_cast<std::size_t>(item)];
-        if (desc.params.as<FlipperParams>().trigger != Trigger::impact || state.fired || state.body.isNull()) return;
-        const int bat = run.world().slot(state.body);
-        const bool struck = std::any_of(
-            run.world().lastImpacts().begin(), run.world().lastImpacts().end(),
-            [&](const Impact& i) { return i.circle >= 0 && i.otherKind == Other::body && i.other == bat; });
-        if (!struck) return;
+        if (desc.params.as<FlipperParams>().trigger != Trigger::impact ||
+            run.states()[static_cast<std::size_t>(item)].fired)
+            return;
         run.partState(item).fired = true;
         trigger(run, item);
     }
@@ -157,8 +160,7 @@ public:
         state.fired = true; // a switched flipper no longer waits for a ball's blow
         const FlipperParams& p = run.items()[static_cast<std::size_t>(item)].params.as<FlipperParams>();
         World& world = run.partWorld();
-        const bool up = world.joint(state.joints.front()).def.motor.speed * upwards(p) > 0.0;
-        world.setJointMotor(state.joints.front(), motorOf(p, !up));
+        world.setJointMotor(state.joints.front(), motorOf(p, !drivenUp(world, state, p)));
     }
     std::optional<ActionKind> clickAction() const override { return ActionKind::toggle; }
     // The capsule is drawn with the bodies; over it the tapered bat as it stands now, its round hinge
@@ -169,8 +171,7 @@ public:
         const FlipperParams& p = item.params.as<FlipperParams>();
         if (state.body.isNull()) return;
         const double angle = d.run.world().body(state.body).angle;
-        const bool up = !state.joints.empty() && !state.joints.front().isNull() &&
-                        d.run.world().joint(state.joints.front()).def.motor.speed * upwards(p) > 0.0;
+        const bool up = drivenUp(d.run.world(), state, p);
         constexpr int kArc = 12;
         render::Point arc[kArc + 1];
         for (int k = 0; k <= kArc; ++k)

@@ -64,6 +64,11 @@ inline bool firstMotorOn(const PartDrawing& d) {
            d.run.world().joint(state.joints.front()).def.motor.on();
 }
 
+/// Whether the world's clock has reached time `at`: a time within 1e-9 s of the step's end counts as
+/// reached, not missed by rounding (n steps of dt add up to n dt give or take a few ulps). The rule of
+/// every part's timer: fuses, delays, burns, holds, runs.
+inline bool timeReached(const World& world, double at) { return world.time() >= at - 1e-9; }
+
 /// Releases a latch: turns the item's first joint's motor off, for good (a released spring, gate or
 /// hammer stays free).
 inline void releaseLatch(LevelRun& run, int item) {

@@ -148,7 +148,7 @@ public:
         if (latched) {
             // The catch: a hook from the bob's far side, the way it would swing on up, to a post.
             const Vec2 along = (bob.position - item.position).normalized();
-            const Vec2 out = item.angle >= 0.0 ? Vec2{along.y * -1.0, along.x} : Vec2{along.y, -along.x};
+            const Vec2 out = item.angle >= 0.0 ? along.perpendicular() : -along.perpendicular();
             const Vec2 from = bob.position + out * bob.radius;
             const Vec2 to = from + out * kCatch;
             d.list.capsule(pt(from), pt(to), 0.04f, style("highlight", "ground_outline"));

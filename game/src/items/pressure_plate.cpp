@@ -102,7 +102,7 @@ public:
                     since = std::min(since, impact.time);
             state.since = since;
         }
-        if (world.time() < *state.since + p.hold - 1e-9) return;
+        if (!timeReached(world, *state.since + p.hold)) return;
         state.fired = true;
         switchWired(run, p.wires);
     }

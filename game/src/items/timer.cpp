@@ -68,8 +68,7 @@ public:
         const TimerParams& p = run.items()[static_cast<std::size_t>(item)].params.as<TimerParams>();
         ItemState& state = run.partState(item);
         const auto start = startedAt(p, state);
-        // The bomb's fuse rule: a time within 1e-9 s of the step's end is reached, not missed by rounding.
-        if (state.fired || !start || run.world().time() < *start + p.delay - 1e-9) return;
+        if (state.fired || !start || !timeReached(run.world(), *start + p.delay)) return;
         state.fired = true;
         switchWired(run, p.wires);
     }
